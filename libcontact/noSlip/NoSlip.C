@@ -1,0 +1,7 @@
+#include "noSlip/NoSlip.H"
+
+namespace gpic {
+
+GPIC_REGISTER(ContactLaw, NoSlip, "noSlip")
+
+} // namespace gpic

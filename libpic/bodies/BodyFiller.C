@@ -1,0 +1,113 @@
+#include "bodies/BodyFiller.H"
+
+#include "bodies/Shape.H"
+#include "dictionary/Dictionary.H"
+
+#include <cmath>
+#include <sstream>
+
+namespace gpic {
+
+namespace {
+
+int materialIndex(const Dictionary& body, const std::vector<std::unique_ptr<Material>>& materials)
+{
+    const std::string name = body.get<std::string>("material");
+    std::string valid;
+    for (std::size_t m = 0; m < materials.size(); ++m) {
+        if (materials[m]->name() == name) return static_cast<int>(m);
+        valid += (valid.empty() ? "" : ", ") + materials[m]->name();
+    }
+    body.fail("material", "material '" + name + "' is not in constant/materials; valid choices: " +
+                              valid);
+}
+
+//- Initial stress at x (eqs. 3.3.1-3.3.4), tension positive.
+class InitialStress {
+public:
+    InitialStress(const Dictionary* dict, double rho, double g)
+    {
+        if (!dict) return;
+        type_ = dict->getWord("type", {"uniform", "geostatic"});
+        if (type_ == "uniform") {
+            const auto s = dict->getChecked<std::vector<double>>(
+                "sigma", [](const std::vector<double>& v) { return v.size() == 4; },
+                "four components (s11 s22 s33 s12)");
+            uniform_ = SymTensor(s[0], s[1], s[2], s[3]);
+        } else {
+            K0_ = dict->getChecked<double>("K0", [](const double& k) { return k > 0; }, "K0 > 0");
+            surface_ = dict->get<double>("surface");
+            rhoG_ = rho * g;
+        }
+    }
+    SymTensor at(const Vector2& x) const
+    {
+        if (type_ != "geostatic") return uniform_;
+        const double s22 = -rhoG_ * std::max(0.0, surface_ - x.y());  // eq. 3.3.1
+        return SymTensor(K0_ * s22, s22, K0_ * s22, 0.0);               // eq. 3.3.2
+    }
+
+private:
+    std::string type_ = "uniform";
+    SymTensor uniform_ = SymTensor::Zero();
+    double K0_ = 0, surface_ = 0, rhoG_ = 0;
+};
+
+} // namespace
+
+FilledBodies fillBodies(const Dictionary& bodiesDict, const Grid& grid,
+                        const std::vector<std::unique_ptr<Material>>& materials,
+                        const Vector2& gravity)
+{
+    FilledBodies out;
+    for (const auto& key : bodiesDict.keys()) {
+        if (!bodiesDict.isDict(key)) bodiesDict.fail(key, "'" + key + "' is not a body sub-dictionary");
+        const Dictionary& body = bodiesDict.subDict(key);
+        const int bodyId = static_cast<int>(out.bodyNames.size());
+        out.bodyNames.push_back(key);
+        const int mat = materialIndex(body, materials);
+        const auto shape = Shape::New(body.subDict("shape"));
+        const auto [lo, hi] = shape->bounds();
+        if (!grid.contains(lo) || !grid.contains(hi)) {
+            std::ostringstream msg;
+            msg << "body '" << key << "' reaches outside the grid: its shape spans ("
+                << lo.transpose() << ") - (" << hi.transpose() << "), the grid ("
+                << grid.origin().transpose() << ") - (" << grid.upper().transpose() << ")";
+            body.fail("shape", msg.str());
+        }
+        const int n = body.getChecked<int>("particlesPerCell", [](const int& k) { return k >= 1 && k <= 10; },
+                                           "1 <= particlesPerCell <= 10");
+        const Vector2 v0 = body.getOrDefault<Vector2>("velocity", Vector2::Zero());
+        Vector2 amplitude = Vector2::Zero(), wavenumber = Vector2::Zero();
+        if (const Dictionary* mode = body.subDictPtr("modeShape")) {
+            amplitude = mode->get<Vector2>("amplitude");
+            wavenumber = mode->get<Vector2>("wavenumber");
+        }
+        const InitialStress stress(body.subDictPtr("initialStress"), materials[mat]->rho(),
+                                   gravity.norm());
+        const Vector2 h = grid.cellSize();
+        const double volume = h.x() * h.y() / (n * n);
+        const Vector2 half(0.5 * h.x() / n, 0.5 * h.y() / n);
+        std::size_t added = 0;
+        for (int j = 0; j < grid.ny(); ++j)
+            for (int i = 0; i < grid.nx(); ++i)
+                for (int b = 0; b < n; ++b)
+                    for (int a = 0; a < n; ++a) {
+                        const Vector2 x = grid.nodePosition(grid.node(i, j)) +
+                                          Vector2((a + 0.5) * h.x() / n, (b + 0.5) * h.y() / n);
+                        if (!shape->inside(x)) continue;
+                        const std::size_t q = out.particles.add(
+                            x, materials[mat]->rho() * volume, volume, half, bodyId, mat);
+                        const double phase = wavenumber.dot(x - grid.origin());
+                        out.particles.v[q] = v0 + amplitude * std::sin(phase);
+                        out.particles.sigma[q] = stress.at(x);
+                        ++added;
+                    }
+        if (added == 0) body.fail("shape", "body '" + key + "' holds no particle: enlarge it or "
+                                           "raise particlesPerCell");
+    }
+    if (out.bodyNames.empty()) bodiesDict.fail("", "constant/bodies defines no body");
+    return out;
+}
+
+} // namespace gpic

@@ -1,0 +1,42 @@
+#include "functionObjects/FunctionObject.H"
+
+#include "core/error.H"
+#include "dictionary/Dictionary.H"
+
+#include <filesystem>
+
+namespace gpic {
+
+FunctionObject::FunctionObject(const Dictionary& dict, const RunContext& context)
+    : name_(dict.name().substr(dict.name().find_last_of('/') + 1)), context_(context),
+      writeInterval_(dict.found("writeInterval")
+                         ? dict.getChecked<long>("writeInterval", [](const long& n) { return n > 0; },
+                                                 "writeInterval >= 1 (steps)")
+                         : 1)
+{}
+
+void FunctionObject::execute(const MpmSolver& solver, double time, long step)
+{
+    if (step % writeInterval_ == 0) write(solver, time);
+}
+
+std::ofstream& FunctionObject::file(const std::string& fileName)
+{
+    for (auto& [n, f] : files_)
+        if (n == fileName) return *f;
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::path(context_.caseDir) / "postProcessing" / name_ / context_.startTimeName;
+    fs::create_directories(dir);
+    auto stream = std::make_unique<std::ofstream>(dir / fileName);
+    if (!*stream) throw InputError((dir / fileName).string(), 0, "cannot open for writing");
+    stream->precision(12);
+    files_.emplace_back(fileName, std::move(stream));
+    return *files_.back().second;
+}
+
+std::unique_ptr<FunctionObject> FunctionObject::New(const Dictionary& dict, const RunContext& context)
+{
+    return Registry<FunctionObject>::select(dict, dict, context);
+}
+
+} // namespace gpic

@@ -1,0 +1,156 @@
+#include "io/GridVtk.H"
+
+#include "core/error.H"
+#include "grid/Grid.H"
+
+#include <vtkCommand.h>
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkImageData.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkSmartPointer.h>
+#include <vtkXMLImageDataReader.h>
+#include <vtkXMLImageDataWriter.h>
+
+#include <filesystem>
+#include <system_error>
+
+namespace gpic {
+
+namespace {
+
+//- Collects VTK error events so they become exceptions instead of stderr noise.
+class ErrorCollector : public vtkCommand {
+public:
+    static ErrorCollector* New() { return new ErrorCollector; }
+    void Execute(vtkObject*, unsigned long event, void* callData) override
+    {
+        if (event != vtkCommand::ErrorEvent) return;
+        std::string text = callData ? static_cast<const char*>(callData) : "unknown VTK error";
+        // VTK prefixes "ERROR: In file.cxx, line N\nClass (0x...): "; keep only the message.
+        const auto colon = text.rfind("): ");
+        if (colon != std::string::npos) text = text.substr(colon + 3);
+        while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) text.pop_back();
+        if (first.empty()) first = text;
+        failed = true;
+    }
+    bool failed = false;
+    std::string first;
+};
+
+//- Silences VTK's global error output while parsing a possibly broken file (the XML parser
+//  reports through its own object, which an observer on the reader does not see).
+class QuietVtk {
+public:
+    QuietVtk() : previous_(vtkObject::GetGlobalWarningDisplay()) { vtkObject::GlobalWarningDisplayOff(); }
+    ~QuietVtk() { vtkObject::SetGlobalWarningDisplay(previous_); }
+    QuietVtk(const QuietVtk&) = delete;
+    QuietVtk& operator=(const QuietVtk&) = delete;
+
+private:
+    int previous_;
+};
+
+vtkSmartPointer<vtkDoubleArray> nodalVectors(const char* name, const std::vector<Vector2>& v)
+{
+    auto a = vtkSmartPointer<vtkDoubleArray>::New();
+    a->SetName(name);
+    a->SetNumberOfComponents(3);
+    a->SetNumberOfTuples(static_cast<vtkIdType>(v.size()));
+    double* out = a->GetPointer(0);
+    for (std::size_t i = 0; i < v.size(); ++i) {
+        out[3 * i] = v[i].x();
+        out[3 * i + 1] = v[i].y();
+        out[3 * i + 2] = 0.0;
+    }
+    return a;
+}
+
+} // namespace
+
+void writeGrid(const std::string& path, const Grid& g, double time)
+{
+    vtkNew<vtkImageData> image;
+    image->SetOrigin(g.origin().x(), g.origin().y(), 0.0);
+    image->SetSpacing(g.cellSize().x(), g.cellSize().y(), 1.0);
+    image->SetExtent(0, g.nx(), 0, g.ny(), 0, 0);
+
+    vtkNew<vtkDoubleArray> mass;
+    mass->SetName("mass");
+    mass->SetNumberOfComponents(1);
+    mass->SetNumberOfTuples(static_cast<vtkIdType>(g.mass.size()));
+    std::copy(g.mass.begin(), g.mass.end(), mass->GetPointer(0));
+    vtkPointData* pd = image->GetPointData();
+    pd->AddArray(mass);
+    pd->AddArray(nodalVectors("velocity", g.velocity));
+    pd->AddArray(nodalVectors("internalForce", g.fInt));
+    pd->AddArray(nodalVectors("externalForce", g.fExt));
+
+    vtkNew<vtkDoubleArray> timeValue;
+    timeValue->SetName("TimeValue");
+    timeValue->SetNumberOfValues(1);
+    timeValue->SetValue(0, time);
+    image->GetFieldData()->AddArray(timeValue);
+
+    const std::string tmp = path + ".tmp";
+    vtkNew<vtkXMLImageDataWriter> writer;
+    vtkNew<ErrorCollector> errors;
+    writer->AddObserver(vtkCommand::ErrorEvent, errors);
+    writer->SetInputData(image);
+    writer->SetFileName(tmp.c_str());
+    writer->SetDataModeToAppended();
+    writer->EncodeAppendedDataOff();
+    writer->SetHeaderTypeToUInt64();
+    writer->SetCompressorTypeToZLib();
+    const int ok = writer->Write();
+    std::error_code ec;
+    if (!ok || errors->failed || writer->GetErrorCode() != 0) {
+        std::filesystem::remove(tmp, ec);
+        throw RunError("cannot write grid to " + path + ": " +
+                       (errors->first.empty() ? "VTK writer failed" : errors->first));
+    }
+    std::filesystem::rename(tmp, path, ec);
+    if (ec) {
+        std::filesystem::remove(tmp, ec);
+        throw RunError("cannot write grid to " + path + ": " + ec.message());
+    }
+}
+
+GridVtkInfo readGridInfo(const std::string& path)
+{
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec))
+        throw InputError(path, 0, "cannot read grid: no such file");
+    vtkNew<vtkXMLImageDataReader> reader;
+    vtkNew<ErrorCollector> errors;
+    reader->AddObserver(vtkCommand::ErrorEvent, errors);
+    reader->SetFileName(path.c_str());
+    {
+        QuietVtk quiet;
+        if (!reader->CanReadFile(path.c_str()))
+            throw InputError(path, 0, "cannot read grid: not a VTK XML ImageData file");
+        try {
+            reader->Update();  // a corrupt block header can ask for an absurd allocation
+        } catch (const std::exception& e) {
+            throw InputError(path, 0, std::string("cannot read grid: corrupt data (") + e.what() + ")");
+        }
+    }
+    vtkImageData* image = reader->GetOutput();
+    if (errors->failed || !image)
+        throw InputError(path, 0, "cannot read grid: " +
+                                      (errors->first.empty() ? "VTK returned no data" : errors->first));
+
+    GridVtkInfo info;
+    image->GetDimensions(info.dimensions.data());
+    image->GetOrigin(info.origin.data());
+    image->GetSpacing(info.spacing.data());
+    vtkDataArray* timeA = image->GetFieldData() ? image->GetFieldData()->GetArray("TimeValue") : nullptr;
+    if (timeA && timeA->GetNumberOfTuples() > 0) info.time = timeA->GetComponent(0, 0);
+    vtkPointData* pd = image->GetPointData();
+    for (int k = 0; pd && k < pd->GetNumberOfArrays(); ++k)
+        if (pd->GetArrayName(k)) info.pointArrays.emplace_back(pd->GetArrayName(k));
+    return info;
+}
+
+} // namespace gpic

@@ -1,0 +1,31 @@
+#include "shapeFunctions/BilinearShape.H"
+
+namespace gpic {
+
+GPIC_REGISTER(ShapeFunction, BilinearShape, "bilinear")
+
+void BilinearShape::evaluate(const Grid& grid, const Particles& p, ShapeWeights& w) const
+{
+    w.resize(p.size(), 4);
+    const Vector2 h = grid.cellSize();
+    for (std::size_t q = 0; q < p.size(); ++q) {
+        int i, j;
+        grid.cellOf(p.x[q], i, j);
+        const Vector2 local = p.x[q] - grid.nodePosition(grid.node(i, j));
+        const double xi = local.x() / h.x(), eta = local.y() / h.y();
+        const std::size_t k = q * 4;
+        // Counter-clockwise from the lower-left node.
+        const int nodes[4] = {grid.node(i, j), grid.node(i + 1, j), grid.node(i + 1, j + 1),
+                              grid.node(i, j + 1)};
+        const double Nx[4] = {1 - xi, xi, xi, 1 - xi}, Ny[4] = {1 - eta, 1 - eta, eta, eta};
+        const double dNx[4] = {-1 / h.x(), 1 / h.x(), 1 / h.x(), -1 / h.x()};
+        const double dNy[4] = {-1 / h.y(), -1 / h.y(), 1 / h.y(), 1 / h.y()};
+        for (int a = 0; a < 4; ++a) {
+            w.node[k + a] = nodes[a];
+            w.N[k + a] = Nx[a] * Ny[a];
+            w.dN[k + a] = Vector2(dNx[a] * Ny[a], Nx[a] * dNy[a]);
+        }
+    }
+}
+
+} // namespace gpic

@@ -1,0 +1,61 @@
+#include "shapeFunctions/UGimpShape.H"
+
+#include <cmath>
+
+namespace gpic {
+
+GPIC_REGISTER(ShapeFunction, UGimpShape, "uGIMP")
+
+void UGimpShape::weight1D(double r, double h, double lp, double& S, double& dS)
+{
+    const double a = std::abs(r), sign = r < 0 ? -1.0 : 1.0;
+    if (a < lp) {
+        S = 1.0 - (r * r + lp * lp) / (2.0 * h * lp);
+        dS = -r / (h * lp);
+    } else if (a < h - lp) {
+        S = 1.0 - a / h;
+        dS = -sign / h;
+    } else if (a < h + lp) {
+        const double d = h + lp - a;
+        S = d * d / (4.0 * h * lp);
+        dS = -sign * d / (2.0 * h * lp);
+    } else {
+        S = 0.0;
+        dS = 0.0;
+    }
+}
+
+void UGimpShape::evaluate(const Grid& grid, const Particles& p, ShapeWeights& w) const
+{
+    w.resize(p.size(), 9);
+    const Vector2 h = grid.cellSize();
+    for (std::size_t q = 0; q < p.size(); ++q) {
+        int i, j;
+        grid.cellOf(p.x[q], i, j);
+        const Vector2 local = p.x[q] - grid.nodePosition(grid.node(i, j));
+        // The three nodes whose support can reach the particle in each direction.
+        const int i0 = local.x() < 0.5 * h.x() ? i - 1 : i;
+        const int j0 = local.y() < 0.5 * h.y() ? j - 1 : j;
+        const Vector2 lp = p.halfSize[q];
+        std::size_t k = q * 9;
+        for (int b = 0; b < 3; ++b) {
+            const int jn = j0 + b;
+            double Sy = 0, dSy = 0;
+            if (jn >= 0 && jn <= grid.ny())
+                weight1D(p.x[q].y() - (grid.origin().y() + jn * h.y()), h.y(), lp.y(), Sy, dSy);
+            for (int a = 0; a < 3; ++a, ++k) {
+                const int in = i0 + a;
+                double Sx = 0, dSx = 0;
+                if (in >= 0 && in <= grid.nx())
+                    weight1D(p.x[q].x() - (grid.origin().x() + in * h.x()), h.x(), lp.x(), Sx,
+                             dSx);
+                const bool inside = in >= 0 && in <= grid.nx() && jn >= 0 && jn <= grid.ny();
+                w.node[k] = inside ? grid.node(in, jn) : -1;
+                w.N[k] = inside ? Sx * Sy : 0.0;
+                w.dN[k] = inside ? Vector2(dSx * Sy, Sx * dSy) : Vector2::Zero();
+            }
+        }
+    }
+}
+
+} // namespace gpic

@@ -1,0 +1,52 @@
+#include "solver/CaseFiles.H"
+
+#include <filesystem>
+
+namespace gpic {
+
+Dictionary readCaseFile(const std::string& caseDir, const std::string& relativePath)
+{
+    return Dictionary::readFile((std::filesystem::path(caseDir) / relativePath).string(),
+                                relativePath);
+}
+
+std::vector<std::unique_ptr<Material>> readMaterials(const Dictionary& materialsDict)
+{
+    std::vector<std::unique_ptr<Material>> materials;
+    for (const auto& key : materialsDict.keys()) {
+        if (!materialsDict.isDict(key))
+            materialsDict.fail(key, "'" + key + "' is not a material sub-dictionary");
+        materials.push_back(Material::New(materialsDict.subDict(key)));
+    }
+    if (materials.empty()) materialsDict.fail("", "no material is defined");
+    return materials;
+}
+
+std::array<std::unique_ptr<BoundaryCondition>, 4> readBoundaries(const Dictionary& gridDict)
+{
+    const Dictionary& sides = gridDict.subDict("boundaries");
+    std::array<std::unique_ptr<BoundaryCondition>, 4> bcs;
+    for (int s = 0; s < 4; ++s) {
+        const std::string& side = gridSideNames()[s];
+        bcs[s] = Registry<BoundaryCondition>::select(sides.subDict(side), sides.subDict(side),
+                                                     static_cast<GridSide>(s));
+    }
+    return bcs;
+}
+
+Vector2 readGravity(const std::string& caseDir)
+{
+    if (!std::filesystem::exists(std::filesystem::path(caseDir) / "constant/g"))
+        return Vector2::Zero();
+    const Dictionary g = readCaseFile(caseDir, "constant/g");
+    return g.get<Vector2>("value");
+}
+
+std::vector<std::string> materialNames(const std::vector<std::unique_ptr<Material>>& materials)
+{
+    std::vector<std::string> names;
+    for (const auto& m : materials) names.push_back(m->name());
+    return names;
+}
+
+} // namespace gpic

@@ -1,0 +1,224 @@
+#include "solver/MpmSolver.H"
+
+#include "core/error.H"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace gpic {
+
+namespace {
+//- sigma : eps for plane-strain tensors (the shear pair counted twice).
+inline double contract(const SymTensor& s, const SymTensor& e)
+{
+    return s[XX] * e[XX] + s[YY] * e[YY] + s[ZZ] * e[ZZ] + 2.0 * s[XY] * e[XY];
+}
+} // namespace
+
+MpmSolver::MpmSolver(Grid grid, Particles particles,
+                     std::vector<std::unique_ptr<Material>> materials,
+                     std::unique_ptr<ShapeFunction> shape,
+                     std::array<std::unique_ptr<BoundaryCondition>, 4> boundaries)
+    : grid_(std::move(grid)), particles_(std::move(particles)), materials_(std::move(materials)),
+      shape_(std::move(shape)), boundaries_(std::move(boundaries))
+{
+    for (int s = 0; s < 4; ++s) sideNodes_[s] = grid_.sideNodes(static_cast<GridSide>(s));
+    for (const auto& m : materials_) {
+        for (const auto& h : m->historyNames()) particles_.declareHistory(h);
+        hasRotation_ = hasRotation_ || m->needsRotation();
+    }
+    particles_.sortByMaterial();
+    blocks_ = particles_.blocks();
+    for (const auto& b : blocks_)
+        if (b.material < 0 || b.material >= static_cast<int>(materials_.size()))
+            throw RunError("particle material id " + std::to_string(b.material) +
+                           " has no material in constant/materials");
+    double smallest = 0;
+    for (double m : particles_.m) smallest = smallest == 0 ? m : std::min(smallest, m);
+    minNodalMass_ = 1e-9 * smallest;
+}
+
+void MpmSolver::applyBoundaries(std::vector<Vector2>& field) const
+{
+    for (int s = 0; s < 4; ++s) boundaries_[s]->constrain(field, sideNodes_[s]);
+}
+
+void MpmSolver::computeWeights()
+{
+    auto timer = timers_.time("shapeFunctions");
+    const Particles& p = particles_;
+    for (std::size_t q = 0; q < p.size(); ++q) {
+        if (!grid_.contains(p.x[q]) || !std::isfinite(p.x[q].x()) || !std::isfinite(p.x[q].y())) {
+            std::ostringstream msg;
+            msg << "particle " << p.id[q] << " (body " << p.body[q] << ", material "
+                << materials_[p.material[q]]->name() << ") at (" << p.x[q].x() << " "
+                << p.x[q].y() << ") is outside the grid [" << grid_.origin().transpose()
+                << "] - [" << grid_.upper().transpose() << "]";
+            throw RunError(msg.str());
+        }
+    }
+    shape_->evaluate(grid_, p, weights_);
+}
+
+void MpmSolver::particlesToGrid()
+{
+    auto timer = timers_.time("particlesToGrid");
+    grid_.resetFields();
+    const Particles& p = particles_;
+    const int stride = weights_.stride;
+    for (std::size_t q = 0; q < p.size(); ++q) {
+        const std::size_t k0 = q * stride;
+        for (int a = 0; a < stride; ++a) {
+            const int n = weights_.node[k0 + a];
+            const double N = weights_.N[k0 + a];
+            if (n < 0) continue;
+            grid_.activate(n);  // also at N = 0: its gradient may still carry force
+            grid_.mass[n] += N * p.m[q];             // lumped mass, row sums of eq. 2.3.7
+            grid_.momentum[n] += (N * p.m[q]) * p.v[q];  // eq. 2.4.1
+        }
+    }
+    for (int n : grid_.active)
+        grid_.velocity[n] = grid_.mass[n] > minNodalMass_ ? Vector2(grid_.momentum[n] / grid_.mass[n])
+                                                         : Vector2::Zero();
+    applyBoundaries(grid_.velocity);
+}
+
+void MpmSolver::computeForces()
+{
+    auto timer = timers_.time("forces");
+    const Particles& p = particles_;
+    const int stride = weights_.stride;
+    for (std::size_t q = 0; q < p.size(); ++q) {
+        const SymTensor& s = p.sigma[q];
+        const std::size_t k0 = q * stride;
+        for (int a = 0; a < stride; ++a) {
+            const int n = weights_.node[k0 + a];
+            if (n < 0) continue;
+            const Vector2& dN = weights_.dN[k0 + a];
+            // eq. 2.3.8: F_int = -sum_p V_p B_p^T sigma_p
+            grid_.fInt[n] -= p.V[q] * Vector2(s[XX] * dN.x() + s[XY] * dN.y(),
+                                              s[XY] * dN.x() + s[YY] * dN.y());
+            grid_.fExt[n] += (weights_.N[k0 + a] * p.m[q]) * gravity_;  // eq. 2.3.9
+        }
+    }
+}
+
+void MpmSolver::updateGrid(double dt)
+{
+    auto timer = timers_.time("gridUpdate");
+    for (int n : grid_.active) {
+        Vector2 F = grid_.fInt[n] + grid_.fExt[n];
+        if (damping_ > 0) {
+            // eq. 3.3.5: F_damp = -alpha |F_ext + F_int| sign(v_n), per component.
+            for (int d = 0; d < 2; ++d) {
+                const double v = grid_.velocity[n][d];
+                const double sign = v > 0 ? 1.0 : (v < 0 ? -1.0 : 0.0);
+                F[d] -= damping_ * std::abs(F[d]) * sign;
+            }
+        }
+        grid_.accel[n] = grid_.mass[n] > minNodalMass_ ? Vector2(F / grid_.mass[n])
+                                                       : Vector2::Zero();  // eq. 2.4.2
+    }
+    applyBoundaries(grid_.accel);
+    for (int n : grid_.active) grid_.velocity[n] += dt * grid_.accel[n];  // eq. 2.4.3
+    applyBoundaries(grid_.velocity);
+}
+
+void MpmSolver::updateStress(double dt)
+{
+    {
+        auto timer = timers_.time("strain");
+        Particles& p = particles_;
+        const int stride = weights_.stride;
+        for (std::size_t q = 0; q < p.size(); ++q) {
+            // Velocity gradient L_ab = sum_i v_i,a dN_i/dx_b (B v of eq. 2.4.5, plus spin).
+            Eigen::Matrix2d L = Eigen::Matrix2d::Zero();
+            const std::size_t k0 = q * stride;
+            for (int a = 0; a < stride; ++a) {
+                const int n = weights_.node[k0 + a];
+                if (n < 0) continue;
+                L.noalias() += grid_.velocity[n] * weights_.dN[k0 + a].transpose();
+            }
+            SymTensor& de = p.dEps[q];
+            de[XX] = dt * L(0, 0);
+            de[YY] = dt * L(1, 1);
+            de[ZZ] = 0.0;  // plane strain
+            de[XY] = 0.5 * dt * (L(0, 1) + L(1, 0));
+            p.dOmega[q] = 0.5 * dt * (L(0, 1) - L(1, 0));
+            p.eps[q] += de;
+            // Volume follows the deformation: V_{t+1} = det(I + dt L) V_t.
+            p.V[q] *= (1.0 + dt * L(0, 0)) * (1.0 + dt * L(1, 1)) - dt * dt * L(0, 1) * L(1, 0);
+        }
+    }
+    auto timer = timers_.time("material");
+    Particles& p = particles_;
+    // Stress work by the trapezoidal rule: an energy measure valid for every material.
+    for (std::size_t q = 0; q < p.size(); ++q) p.work[q] += 0.5 * p.V[q] * contract(p.sigma[q], p.dEps[q]);
+    for (const auto& block : blocks_) materials_[block.material]->updateStress(p, block, dt);
+    for (std::size_t q = 0; q < p.size(); ++q) p.work[q] += 0.5 * p.V[q] * contract(p.sigma[q], p.dEps[q]);
+}
+
+void MpmSolver::gridToParticles(double dt)
+{
+    auto timer = timers_.time("gridToParticles");
+    Particles& p = particles_;
+    const int stride = weights_.stride;
+    bool finite = true;
+    for (std::size_t q = 0; q < p.size(); ++q) {
+        Vector2 vNew = Vector2::Zero(), a = Vector2::Zero();
+        const std::size_t k0 = q * stride;
+        for (int k = 0; k < stride; ++k) {
+            const int n = weights_.node[k0 + k];
+            if (n < 0) continue;
+            const double N = weights_.N[k0 + k];
+            vNew += N * grid_.velocity[n];
+            a += N * grid_.accel[n];
+        }
+        p.x[q] += dt * vNew;  // eq. 2.4.7
+        p.v[q] += dt * a;     // eq. 2.4.8 (FLIP)
+        finite = finite && std::isfinite(p.v[q].x() + p.v[q].y());
+    }
+    if (!finite) {
+        for (std::size_t q = 0; q < p.size(); ++q)
+            if (!std::isfinite(p.v[q].x() + p.v[q].y()))
+                throw RunError("particle " + std::to_string(p.id[q]) + " (material " +
+                               materials_[p.material[q]]->name() +
+                               ") has a non-finite velocity: the step is unstable");
+    }
+}
+
+void MpmSolver::remapVelocity()
+{
+    auto timer = timers_.time("particlesToGrid");
+    const Particles& p = particles_;
+    const int stride = weights_.stride;
+    for (int n : grid_.active) grid_.momentum[n].setZero();
+    for (std::size_t q = 0; q < p.size(); ++q) {
+        const std::size_t k0 = q * stride;
+        for (int a = 0; a < stride; ++a) {
+            const int n = weights_.node[k0 + a];
+            if (n >= 0) grid_.momentum[n] += (weights_.N[k0 + a] * p.m[q]) * p.v[q];
+        }
+    }
+    for (int n : grid_.active)
+        grid_.velocity[n] = grid_.mass[n] > minNodalMass_ ? Vector2(grid_.momentum[n] / grid_.mass[n])
+                                                         : Vector2::Zero();
+    applyBoundaries(grid_.velocity);
+}
+
+double MpmSolver::maxParticleSpeed() const
+{
+    double vmax = 0;
+    for (const auto& v : particles_.v) vmax = std::max(vmax, v.norm());
+    return vmax;
+}
+
+double MpmSolver::criticalTimeStep() const
+{
+    double c = 0;
+    for (const auto& m : materials_) c = std::max(c, m->waveSpeed());
+    return grid_.minCellSize() / (c + maxParticleSpeed());
+}
+
+} // namespace gpic

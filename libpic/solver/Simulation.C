@@ -1,0 +1,218 @@
+#include "solver/Simulation.H"
+
+#include "core/Plugins.H"
+#include "core/error.H"
+#include "io/GridVtk.H"
+#include "io/ParticlesVtk.H"
+#include "io/PvdCollection.H"
+#include "io/TimeDirectories.H"
+#include "solver/CaseFiles.H"
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+namespace gpic {
+
+namespace fs = std::filesystem;
+
+namespace {
+std::string exact(double v)
+{
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.17g", v);
+    return buf;
+}
+
+std::ostream& nullStream()
+{
+    static std::ofstream sink;
+    return sink;
+}
+
+//- Map the material ids stored in a time directory onto the order of constant/materials.
+void remapMaterials(Particles& p, const std::vector<std::string>& stored,
+                    const std::vector<std::string>& current, const std::string& file)
+{
+    std::vector<int> map(stored.size(), -1);
+    for (std::size_t s = 0; s < stored.size(); ++s) {
+        for (std::size_t c = 0; c < current.size(); ++c)
+            if (stored[s] == current[c]) map[s] = static_cast<int>(c);
+        if (map[s] < 0)
+            throw InputError(file, 0, "material '" + stored[s] +
+                                          "' of the particles is not in constant/materials");
+    }
+    for (auto& m : p.material) {
+        if (m < 0 || m >= static_cast<int>(map.size()))
+            throw InputError(file, 0, "particle material id " + std::to_string(m) + " is unknown");
+        m = map[m];
+    }
+}
+} // namespace
+
+Simulation::Simulation(const RunOptions& options)
+    : options_(options),
+      controlDict_(readCaseFile(options.caseDir, "system/controlDict"))
+{
+    const std::string& dir = options_.caseDir;
+    caseName_ = fs::absolute(dir).lexically_normal().filename().string();
+    if (caseName_.empty()) caseName_ = fs::absolute(dir).lexically_normal().parent_path().filename().string();
+    Plugins::open(controlDict_, "libs");
+    for (const auto& lib : options_.libs) Plugins::open(lib);
+
+    timeControl_ = std::make_unique<TimeControl>(controlDict_);
+    const auto damping = controlDict_.getOrDefault<double>("damping", 0.0);
+    if (damping < 0 || damping >= 1) controlDict_.fail("damping", "damping must lie in [0, 1)");
+    writeGrid_ = controlDict_.getOrDefault<bool>("writeGrid", false);
+    progressInterval_ = controlDict_.getOrDefault<double>("progressInterval", 5.0);
+
+    // Start time directory.
+    std::string startName;
+    if (options_.startTime) startName = findTime(dir, *options_.startTime);
+    else if (timeControl_->startFrom() == "latestTime") startName = latestTime(dir);
+    else if (timeControl_->startFrom() == "firstTime") startName = listTimeDirectories(dir).front().second;
+    else startName = findTime(dir, timeControl_->startTime());
+
+    Dictionary gridDict = readCaseFile(dir, "constant/grid");
+    Grid grid(gridDict);
+    auto boundaries = readBoundaries(gridDict);
+    Dictionary materialsDict = readCaseFile(dir, "constant/materials");
+    auto materials = readMaterials(materialsDict);
+
+    Dictionary schemes;
+    if (fs::exists(fs::path(dir) / "system/mpmSchemes")) schemes = readCaseFile(dir, "system/mpmSchemes");
+    const std::string schemeName = schemes.getOrDefault<std::string>("updateScheme", "USL");
+    const std::string shapeName = schemes.getOrDefault<std::string>("shapeFunction", "bilinear");
+    scheme_ = Registry<UpdateScheme>::select(schemeName, schemes, schemes, "updateScheme");
+    auto shape = Registry<ShapeFunction>::select(shapeName, schemes, schemes, "shapeFunction");
+
+    Particles particles;
+    std::vector<std::string> storedMaterials, bodyNames;
+    const std::string particleFile = (fs::path(dir) / startName / "particles.vtp").string();
+    readParticles(particleFile, particles, time_, &storedMaterials, &bodyNames);
+    remapMaterials(particles, storedMaterials, materialNames(materials), startName + "/particles.vtp");
+    const fs::path timeFile = fs::path(dir) / startName / "uniform/time";
+    if (fs::exists(timeFile)) {
+        const Dictionary t = Dictionary::readFile(timeFile.string(), startName + "/uniform/time");
+        time_ = t.get<double>("value");
+        step_ = t.get<long>("index");
+    }
+
+    solver_ = std::make_unique<MpmSolver>(std::move(grid), std::move(particles), std::move(materials),
+                                          std::move(shape), std::move(boundaries));
+    solver_->setGravity(readGravity(dir));
+    solver_->setDamping(damping);
+
+    context_ = RunContext{dir, startName, bodyNames, materialNames(solver_->materials())};
+    if (const Dictionary* fns = controlDict_.subDictPtr("functions"))
+        for (const auto& key : fns->keys()) functions_.push_back(FunctionObject::New(fns->subDict(key), context_));
+
+    std::ostringstream why;
+    double c = 0;
+    for (const auto& m : solver_->materials()) c = std::max(c, m->waveSpeed());
+    why << "cell size " << solver_->grid().minCellSize() << " m / (wave speed " << c
+        << " m/s + particle speed " << solver_->maxParticleSpeed() << " m/s)";
+    timeControl_->checkStable(solver_->criticalTimeStep(), why.str());
+
+    // Every keyword has been read by now: what is left is a typo or a leftover.
+    controlDict_.warnUnused();
+    gridDict.warnUnused();
+    materialsDict.warnUnused();
+    schemes.warnUnused();
+
+    log() << "Case " << caseName_ << ": " << solver_->particles().size() << " particles, "
+          << solver_->grid().nx() << " x " << solver_->grid().ny() << " cells, scheme " << schemeName
+          << ", shape functions " << shapeName << ", starting at t = " << time_ << " (" << startName
+          << ")\n";
+}
+
+Simulation::~Simulation() = default;
+
+std::ostream& Simulation::log() const { return options_.quiet ? nullStream() : std::cout; }
+
+void Simulation::write()
+{
+    auto timer = solver_->timers().time("output");
+    const std::string name = timeName(time_, timeControl_->timePrecision());
+    const std::string& dir = options_.caseDir;
+    writeTimeDirectoryAtomically(dir, name, [&](const std::string& tmp) {
+        writeParticles(tmp + "/particles.vtp", solver_->particles(), time_, context_.materialNames,
+                       context_.bodyNames);
+        if (writeGrid_) writeGrid(tmp + "/grid.vti", solver_->grid(), time_);
+        fs::create_directories(tmp + "/uniform");
+        std::ofstream t(tmp + "/uniform/time");
+        t << "FoamFile { version 2.0; format ascii; class dictionary; object time; }\n"
+          << "value   " << exact(time_) << ";\nname    \"" << name << "\";\nindex   " << step_
+          << ";\ndeltaT  " << exact(deltaT_) << ";\n";
+        if (!t) throw RunError("cannot write " + tmp + "/uniform/time");
+    });
+    PvdCollection pvd((fs::path(dir) / (caseName_ + ".pvd")).string());
+    pvd.add(time_, name + "/particles.vtp", 0);
+    if (writeGrid_) pvd.add(time_, name + "/grid.vti", 1);
+    if (timeControl_->purgeWrite() > 0) {
+        auto times = listTimeDirectories(dir);
+        while (static_cast<int>(times.size()) > timeControl_->purgeWrite()) {
+            if (times.front().second != context_.startTimeName || times.size() > 1) {
+                pvd.removeTime(times.front().first);
+                removeTimeDirectory(dir, times.front().second);
+            }
+            times.erase(times.begin());
+        }
+    }
+    pvd.write();
+}
+
+long Simulation::run()
+{
+    using clock = std::chrono::steady_clock;
+    const auto wallStart = clock::now();
+    auto lastProgress = wallStart;
+    const double tStart = time_;
+    const long firstStep = step_;
+    {
+        // A restart drops the later entries of the ParaView index (they will be rewritten).
+        PvdCollection pvd((fs::path(options_.caseDir) / (caseName_ + ".pvd")).string());
+        pvd.removeAfter(time_);
+        pvd.add(time_, context_.startTimeName + "/particles.vtp", 0);
+        pvd.write();
+    }
+    for (auto& f : functions_) f->start(*solver_, time_);
+    bool writtenLast = true;
+    while (!timeControl_->finished(time_)) {
+        deltaT_ = timeControl_->deltaT(time_, solver_->criticalTimeStep());
+        scheme_->advance(*solver_, deltaT_);
+        const double tPrevious = time_;
+        time_ += deltaT_;
+        ++step_;
+        {
+            auto timer = solver_->timers().time("functionObjects");
+            for (auto& f : functions_) f->execute(*solver_, time_, step_);
+        }
+        writtenLast = timeControl_->isWriteTime(tPrevious, time_, step_);
+        if (writtenLast) write();
+        const auto now = clock::now();
+        if (std::chrono::duration<double>(now - lastProgress).count() >= progressInterval_) {
+            lastProgress = now;
+            const double wall = std::chrono::duration<double>(now - wallStart).count();
+            const double left = wall * (timeControl_->endTime() - time_) / std::max(time_ - tStart, 1e-300);
+            char line[160];
+            std::snprintf(line, sizeof line, "t = %-12.6g step %-9ld dt %-10.3g wall %8.1f s   left ~%8.1f s",
+                          time_, step_, deltaT_, wall, left);
+            log() << line << std::endl;
+        }
+    }
+    if (!writtenLast) write();
+    const double wall = std::chrono::duration<double>(clock::now() - wallStart).count();
+    const long steps = step_ - firstStep;
+    log() << "End: t = " << time_ << ", " << steps << " steps, " << solver_->particles().size()
+          << " particles, wall " << wall << " s, "
+          << (wall > 0 ? double(steps) * solver_->particles().size() / wall : 0.0)
+          << " particle-updates/s\n";
+    solver_->timers().print(log());
+    return steps;
+}
+
+} // namespace gpic
