@@ -297,7 +297,8 @@ TEST_F(DictionaryFiles, IncludeIsRelativeToTheIncludingFile)
 {
     write("case/system/common", "nu 0.3;\n\nE 1e7;\n");
     const std::string path = write("case/constant/materials",
-                                   "sand\n{\n    #include \"../system/common\"\n    rho 2650;\n}\n");
+                                   "sand\n{\n    #include \"../system/common\"\n"
+                                   "    rho 2650;\n}\n");
     const Dictionary d = Dictionary::readFile(path, "constant/materials");
     const Dictionary& sand = d.subDict("sand");
     EXPECT_DOUBLE_EQ(sand.get<double>("E"), 1e7);
@@ -347,6 +348,8 @@ TEST_F(DictionaryFiles, MissingIncludeIsAnErrorAtTheDirective)
     const std::string path = write("main", "a 1;\n\n#include \"nothere\"\n");
     EXPECT_ERROR_STARTS(Dictionary::readFile(path, "system/main"),
                         "system/main:3: cannot open #include file \"nothere\"");
+    EXPECT_ERROR_STARTS(Dictionary::parse("\n#include \"\"", "f"),
+                        "f:2: #include needs a file name");
     const std::string optional = write("opt", "#includeIfPresent \"nothere\"\na 1;\n");
     EXPECT_EQ(Dictionary::readFile(optional).keys(), std::vector<std::string>{"a"});
 }
@@ -414,6 +417,22 @@ clay
     EXPECT_DOUBLE_EQ(clay.get<double>("rho"), 2650);
 }
 
+TEST(Dictionary, MacroCopiesAreCheckedForUnusedEntries)
+{
+    // The template is used up by the copies; each copy reports what its reader ignored.
+    const Dictionary d = Dictionary::parse(
+        "defaults { rho 1; rhoo 2; }\nsand $defaults;\nclay { $defaults; E 3; }\n", "f");
+    d.subDict("sand").get<double>("rho");
+    d.subDict("clay").get<double>("rho");
+    d.subDict("clay").get<double>("E");
+    EXPECT_EQ(d.unusedKeys(), (std::vector<std::string>{"f/sand/rhoo", "f/clay/rhoo"}));
+    ::testing::internal::CaptureStderr();
+    d.warnUnused();
+    const std::string err = ::testing::internal::GetCapturedStderr();
+    EXPECT_NE(err.find("f:1: keyword 'rhoo' in dictionary f/sand is not used"), std::string::npos)
+        << err;
+}
+
 TEST(Dictionary, UndefinedOrMisusedMacroIsAnErrorAtItsLine)
 {
     EXPECT_ERROR_STARTS(Dictionary::parse("a 1;\nb $c;\n", "f"), "f:2: macro '$c' is undefined");
@@ -421,7 +440,8 @@ TEST(Dictionary, UndefinedOrMisusedMacroIsAnErrorAtItsLine)
     EXPECT_ERROR_STARTS(Dictionary::parse("b $c;\nc 1;\n", "f"), "f:1: macro '$c' is undefined");
     EXPECT_ERROR_STARTS(Dictionary::parse("s { a 1; }\n\nb 1 $s;\n", "f"),
                         "f:3: macro '$s' names a dictionary");
-    EXPECT_ERROR_STARTS(Dictionary::parse("a 1;\ns { $a; }\n", "f"), "f:2: macro '$a' names a value");
+    EXPECT_ERROR_STARTS(Dictionary::parse("a 1;\ns { $a; }\n", "f"),
+                        "f:2: macro '$a' names a value");
 }
 
 // ---------------------------------------------------------------- typed look-up and messages

@@ -22,7 +22,7 @@ const Entry& DictionaryParser::lookupMacro(const Dictionary& dict, const Token& 
     for (const Dictionary* scope = &dict; scope; scope = scope->parent_) {
         // The whole name first: a keyword may itself contain a '.'.
         if (const Entry* e = entryIn(*scope, name)) {
-            markUsed(*e);
+            setUsed(*e, true);
             return *e;
         }
         std::vector<const Entry*> chain{entryIn(*scope, path[0])};
@@ -30,7 +30,7 @@ const Entry& DictionaryParser::lookupMacro(const Dictionary& dict, const Token& 
             chain.push_back(entryIn(*chain.back()->dict, path[k]));
         if (chain.size() == path.size() && chain.back()) {
             for (const Entry* e : chain) e->used = true;
-            markUsed(*chain.back());
+            setUsed(*chain.back(), true);
             return *chain.back();
         }
     }
@@ -51,9 +51,13 @@ void DictionaryParser::mergeMacro(Dictionary& dict, const Token& macro, Stream& 
             throw InputError(macro.file, macro.line, "missing ';' after '" + macro.text + "'");
         in.next();
     }
-    // Clone first: adding to `dict` may move the entries `source` lives among.
+    // Clone first: adding to `dict` may move the entries `source` lives among. The clones start
+    // unused, so that what the model never reads is reported where it was merged in.
     std::vector<Entry> entries;
-    for (const Entry& e : source.dict->entries_) entries.push_back(cloneEntry(e));
+    for (const Entry& e : source.dict->entries_) {
+        entries.push_back(cloneEntry(e));
+        setUsed(entries.back(), false);
+    }
     for (Entry& e : entries) addEntry(dict, std::move(e), Mode::merge);
 }
 

@@ -139,6 +139,7 @@ void DictionaryParser::parseEntry(Dictionary& dict, const Token& keyword, Stream
             entry.dict = std::make_shared<Dictionary>(*copied);
             entry.dict->file_ = keyword.file;
             entry.dict->startLine_ = entry.dict->endLine_ = keyword.line;
+            setUsed(entry, false);  // the copy reports its own unused entries
         }
     }
     addEntry(dict, std::move(entry), mode);
@@ -206,6 +207,8 @@ void DictionaryParser::parseInclude(Dictionary& dict, const Token& directive, St
                          directive.text + " needs a quoted file name: " + directive.text +
                              " \"file\"");
     const Token& name = in.next();
+    if (name.text.empty())
+        throw InputError(name.file, name.line, directive.text + " needs a file name");
     if (!in.atEnd() && isPunct(in.peek().token, ';')) in.next();  // tolerated, as in OpenFOAM
     if (includeDepth_ >= maxIncludeDepth)
         throw InputError(directive.file, directive.line,

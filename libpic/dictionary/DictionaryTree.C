@@ -51,11 +51,11 @@ const Entry* DictionaryParser::entryIn(const Dictionary& dict, const std::string
     return nullptr;
 }
 
-void DictionaryParser::markUsed(const Entry& entry)
+void DictionaryParser::setUsed(const Entry& entry, bool used)
 {
-    entry.used = true;
+    entry.used = used;
     if (entry.dict)
-        for (const Entry& e : entry.dict->entries_) markUsed(e);
+        for (const Entry& e : entry.dict->entries_) setUsed(e, used);
 }
 
 bool DictionaryParser::readText(const std::string& path, std::string& text)

@@ -102,7 +102,9 @@ void writeGrid(const std::string& path, const Grid& g, double time)
     writer->SetDataModeToAppended();
     writer->EncodeAppendedDataOff();
     writer->SetHeaderTypeToUInt64();
-    writer->SetCompressorTypeToZLib();
+    // Uncompressed: faster to write, and VTK 9.1 crashes (SIGFPE, huge allocations) on some
+    // corrupt compressed-block headers instead of reporting an error.
+    writer->SetCompressorTypeToNone();
     const int ok = writer->Write();
     std::error_code ec;
     if (!ok || errors->failed || writer->GetErrorCode() != 0) {

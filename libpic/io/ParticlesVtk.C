@@ -19,9 +19,13 @@
 #include <vtkXMLPolyDataReader.h>
 #include <vtkXMLPolyDataWriter.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <stdexcept>
 #include <system_error>
 
@@ -140,6 +144,89 @@ vtkSmartPointer<vtkStringArray> stringArray(const char* name, const std::vector<
 [[noreturn]] void cannotRead(const std::string& path, const std::string& why)
 {
     throw InputError(path, 0, "cannot read particles: " + why);
+}
+
+//- The value of attribute `name` in one XML element's text ("" when absent).
+std::string attribute(const std::string& element, const std::string& name)
+{
+    const std::string key = " " + name + "=\"";
+    const auto at = element.find(key);
+    if (at == std::string::npos) return "";
+    const auto begin = at + key.size();
+    const auto close = element.find('"', begin);
+    return element.substr(begin, close == std::string::npos ? std::string::npos : close - begin);
+}
+
+//- VTK 9.1 crashes instead of failing on some corrupt files: an unknown array type (null
+//  dereference), a wrong header_type or a string array whose byte count runs past the end
+//  (overrun), a bad compressed-block header (SIGFPE). So accept only the layout writeParticles
+//  writes (UInt64 headers, no compression, appended raw data, known types, every block inside
+//  the file, string blocks properly terminated) and check it before VTK sees the file.
+void checkLayout(const std::string& path)
+{
+    static const std::array<const char*, 12> known{"Int8",  "UInt8",  "Int16",   "UInt16",
+                                                   "Int32", "UInt32", "Int64",   "UInt64",
+                                                   "Float32", "Float64", "String", "Bit"};
+    std::ifstream in(path, std::ios::binary);
+    in.seekg(0, std::ios::end);
+    const auto fileSize = static_cast<std::uint64_t>(in.tellg());
+    in.seekg(0);
+
+    // The XML part ends at the '_' that opens the appended binary block.
+    std::string header;
+    std::size_t tag = std::string::npos, underscore = std::string::npos;
+    char chunk[4096];
+    while (underscore == std::string::npos && in.read(chunk, sizeof chunk).gcount() > 0) {
+        header.append(chunk, static_cast<std::size_t>(in.gcount()));
+        if (tag == std::string::npos) tag = header.find("<AppendedData");
+        if (tag != std::string::npos) underscore = header.find('_', tag);
+    }
+    if (underscore == std::string::npos) cannotRead(path, "no appended data block");
+    in.clear();
+    const std::uint64_t dataStart = underscore + 1;
+    header.resize(tag);
+
+    const auto file = header.find("<VTKFile");
+    const std::string root =
+        file == std::string::npos ? "" : header.substr(file, header.find('>', file) - file);
+    if (attribute(root, "header_type") != "UInt64" || root.find(" compressor=") != std::string::npos)
+        cannotRead(path, "not written by writeParticles (expected header_type=\"UInt64\" and no "
+                         "compressor)");
+
+    for (const char* name : {"<DataArray", "<Array"}) {
+        for (auto pos = header.find(name); pos != std::string::npos; pos = header.find(name, pos + 1)) {
+            const auto end = header.find('>', pos);
+            const std::string element =
+                header.substr(pos, end == std::string::npos ? std::string::npos : end - pos);
+            const std::string type = attribute(element, "type");
+            if (std::find_if(known.begin(), known.end(), [&](const char* k) { return type == k; }) ==
+                known.end())
+                cannotRead(path, "unknown array type '" + type + "'");
+            if (attribute(element, "format") != "appended")
+                cannotRead(path, "array '" + attribute(element, "Name") + "' is not appended data");
+
+            // Each block is a UInt64 byte count followed by that many bytes.
+            const std::string offsetText = attribute(element, "offset");
+            char* tail = nullptr;
+            const std::uint64_t offset = std::strtoull(offsetText.c_str(), &tail, 10);
+            std::uint64_t bytes = 0;
+            const std::uint64_t at = dataStart + offset;
+            if (offsetText.empty() || *tail != '\0' || at > fileSize || fileSize - at < 8 ||
+                !in.seekg(static_cast<std::streamoff>(at)) ||
+                !in.read(reinterpret_cast<char*>(&bytes), sizeof bytes) || bytes > fileSize - at - 8)
+                cannotRead(path, "data of array '" + attribute(element, "Name") +
+                                     "' lies outside the file");
+            if (type == "String") {
+                // NumberOfTuples strings, each terminated by '\0', filling the block exactly.
+                std::string block(bytes, '\0');
+                in.read(block.data(), static_cast<std::streamsize>(bytes));
+                const auto strings = std::count(block.begin(), block.end(), '\0');
+                if (!in || (bytes > 0 && block.back() != '\0') ||
+                    std::to_string(strings) != attribute(element, "NumberOfTuples"))
+                    cannotRead(path, "corrupt string array '" + attribute(element, "Name") + "'");
+            }
+        }
+    }
 }
 
 //- The point array `name` with `nComponents` components and one tuple per point.
@@ -277,7 +364,9 @@ void writeParticles(const std::string& path, const Particles& p, double time,
     writer->SetDataModeToAppended();
     writer->EncodeAppendedDataOff();  // raw bytes: smaller, and Float64 stays bit-exact
     writer->SetHeaderTypeToUInt64();  // arrays over 4 GiB
-    writer->SetCompressorTypeToZLib();
+    // Uncompressed: faster to write, and VTK 9.1 crashes (SIGFPE, huge allocations) on some
+    // corrupt compressed-block headers instead of reporting an error.
+    writer->SetCompressorTypeToNone();
     const int ok = writer->Write();
     std::error_code ec;
     if (!ok || errors->failed || writer->GetErrorCode() != 0) {
@@ -305,6 +394,7 @@ void readParticles(const std::string& path, Particles& p, double& time,
     {
         QuietVtk quiet;
         if (!reader->CanReadFile(path.c_str())) cannotRead(path, "not a VTK XML PolyData file");
+        checkLayout(path);
         // A corrupt block header can make VTK ask for an absurd allocation.
         try {
             reader->Update();

@@ -42,6 +42,18 @@ Vector2 readGravity(const std::string& caseDir)
     return g.get<Vector2>("value");
 }
 
+std::string caseName(const std::string& caseDir)
+{
+    std::filesystem::path p = std::filesystem::absolute(caseDir).lexically_normal();
+    if (p.filename().empty()) p = p.parent_path();
+    return p.filename().string();
+}
+
+std::string pvdPath(const std::string& caseDir)
+{
+    return (std::filesystem::path(caseDir) / (caseName(caseDir) + ".pvd")).string();
+}
+
 std::vector<std::string> materialNames(const std::vector<std::unique_ptr<Material>>& materials)
 {
     std::vector<std::string> names;

@@ -34,9 +34,9 @@ MpmSolver::MpmSolver(Grid grid, Particles particles,
         if (b.material < 0 || b.material >= static_cast<int>(materials_.size()))
             throw RunError("particle material id " + std::to_string(b.material) +
                            " has no material in constant/materials");
-    double smallest = 0;
-    for (double m : particles_.m) smallest = smallest == 0 ? m : std::min(smallest, m);
-    minNodalMass_ = 1e-9 * smallest;
+    double lightest = 0;
+    for (double m : particles_.m) lightest = lightest == 0 ? m : std::min(lightest, m);
+    minNodalMass_ = 1e-9 * lightest;
 }
 
 void MpmSolver::applyBoundaries(std::vector<Vector2>& field) const
@@ -78,8 +78,10 @@ void MpmSolver::particlesToGrid()
             grid_.momentum[n] += (N * p.m[q]) * p.v[q];  // eq. 2.4.1
         }
     }
+    // No small-mass cut-off: p_i/m_i is a weighted mean of particle velocities, exact for
+    // any m_i > 0; zeroing light nodes would put spurious strain into a rigid translation.
     for (int n : grid_.active)
-        grid_.velocity[n] = grid_.mass[n] > minNodalMass_ ? Vector2(grid_.momentum[n] / grid_.mass[n])
+        grid_.velocity[n] = grid_.mass[n] > 0.0 ? Vector2(grid_.momentum[n] / grid_.mass[n])
                                                          : Vector2::Zero();
     applyBoundaries(grid_.velocity);
 }
@@ -117,6 +119,8 @@ void MpmSolver::updateGrid(double dt)
                 F[d] -= damping_ * std::abs(F[d]) * sign;
             }
         }
+        // Nodes far lighter than any particle (a particle just touching the cell) would
+        // get a huge F/m: USL then feeds it into the strain (the small-mass instability).
         grid_.accel[n] = grid_.mass[n] > minNodalMass_ ? Vector2(F / grid_.mass[n])
                                                        : Vector2::Zero();  // eq. 2.4.2
     }
@@ -202,7 +206,7 @@ void MpmSolver::remapVelocity()
         }
     }
     for (int n : grid_.active)
-        grid_.velocity[n] = grid_.mass[n] > minNodalMass_ ? Vector2(grid_.momentum[n] / grid_.mass[n])
+        grid_.velocity[n] = grid_.mass[n] > 0.0 ? Vector2(grid_.momentum[n] / grid_.mass[n])
                                                          : Vector2::Zero();
     applyBoundaries(grid_.velocity);
 }

@@ -58,8 +58,7 @@ Simulation::Simulation(const RunOptions& options)
       controlDict_(readCaseFile(options.caseDir, "system/controlDict"))
 {
     const std::string& dir = options_.caseDir;
-    caseName_ = fs::absolute(dir).lexically_normal().filename().string();
-    if (caseName_.empty()) caseName_ = fs::absolute(dir).lexically_normal().parent_path().filename().string();
+    caseName_ = caseName(dir);
     Plugins::open(controlDict_, "libs");
     for (const auto& lib : options_.libs) Plugins::open(lib);
 
@@ -149,7 +148,7 @@ void Simulation::write()
           << ";\ndeltaT  " << exact(deltaT_) << ";\n";
         if (!t) throw RunError("cannot write " + tmp + "/uniform/time");
     });
-    PvdCollection pvd((fs::path(dir) / (caseName_ + ".pvd")).string());
+    PvdCollection pvd(pvdPath(dir));
     pvd.add(time_, name + "/particles.vtp", 0);
     if (writeGrid_) pvd.add(time_, name + "/grid.vti", 1);
     if (timeControl_->purgeWrite() > 0) {
@@ -174,7 +173,7 @@ long Simulation::run()
     const long firstStep = step_;
     {
         // A restart drops the later entries of the ParaView index (they will be rewritten).
-        PvdCollection pvd((fs::path(options_.caseDir) / (caseName_ + ".pvd")).string());
+        PvdCollection pvd(pvdPath(options_.caseDir));
         pvd.removeAfter(time_);
         pvd.add(time_, context_.startTimeName + "/particles.vtp", 0);
         pvd.write();

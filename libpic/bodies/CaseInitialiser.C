@@ -1,0 +1,39 @@
+#include "bodies/CaseInitialiser.H"
+
+#include "bodies/BodyFiller.H"
+#include "core/Plugins.H"
+#include "io/ParticlesVtk.H"
+#include "io/PvdCollection.H"
+#include "io/TimeDirectories.H"
+#include "solver/CaseFiles.H"
+
+
+namespace gpic {
+
+InitialiseSummary initialiseCase(const std::string& dir)
+{
+    const Dictionary control = readCaseFile(dir, "system/controlDict");
+    Plugins::open(control, "libs");
+    const Dictionary gridDict = readCaseFile(dir, "constant/grid");
+    const Grid grid(gridDict);
+    const Dictionary materialsDict = readCaseFile(dir, "constant/materials");
+    const auto materials = readMaterials(materialsDict);
+    const Dictionary bodiesDict = readCaseFile(dir, "constant/bodies");
+    const auto filled = fillBodies(bodiesDict, grid, materials, readGravity(dir));
+    bodiesDict.warnUnused();
+
+    const double t0 = control.getOrDefault<double>("startTime", 0.0);
+    const std::string start = timeName(t0);
+    writeTimeDirectoryAtomically(dir, start, [&](const std::string& tmp) {
+        writeParticles(tmp + "/particles.vtp", filled.particles, t0, materialNames(materials),
+                       filled.bodyNames);
+    });
+    // A fresh start: the ParaView index holds the initial state only.
+    PvdCollection pvd(pvdPath(dir));
+    pvd.removeAfter(-1e300);
+    pvd.add(t0, start + "/particles.vtp", 0);
+    pvd.write();
+    return {filled.particles.size(), filled.bodyNames.size(), start};
+}
+
+} // namespace gpic
