@@ -182,6 +182,10 @@ void checkLayout(const std::string& path)
         if (tag != std::string::npos) underscore = header.find('_', tag);
     }
     if (underscore == std::string::npos) cannotRead(path, "no appended data block");
+    // VTK takes the first non-blank character after the tag as the start of the data.
+    const auto tagEnd = header.find('>', tag);
+    if (tagEnd > underscore || header.find_first_not_of(" \t\r\n", tagEnd + 1) != underscore)
+        cannotRead(path, "corrupt appended data block");
     in.clear();
     const std::uint64_t dataStart = underscore + 1;
     header.resize(tag);
