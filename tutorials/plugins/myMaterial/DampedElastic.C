@@ -1,0 +1,60 @@
+#include "DampedElastic.H"
+
+#include "dictionary/Dictionary.H"
+#include "materials/JaumannRate.H"
+
+#include <cmath>
+
+namespace myMaterial {
+
+using gpic::XX;
+using gpic::XY;
+using gpic::YY;
+using gpic::ZZ;
+
+// The one line that makes the model selectable as `type viscoElastic;`.
+GPIC_REGISTER(gpic::Material, DampedElastic, "viscoElastic")
+
+DampedElastic::DampedElastic(const gpic::Dictionary& dict)
+    : gpic::Material(dict),
+      E_(dict.getChecked<double>("E", [](const double& v) { return v > 0; }, "E > 0")),
+      nu_(dict.getChecked<double>(
+          "nu", [](const double& v) { return v > -1.0 && v < 0.5; }, "-1 < nu < 0.5")),
+      eta_(dict.getChecked<double>("eta", [](const double& v) { return v >= 0; }, "eta >= 0"))
+{}
+
+double DampedElastic::waveSpeed() const
+{
+    // P-wave speed sqrt((K + 4G/3)/rho); viscosity does not change the front speed.
+    return std::sqrt((K() + 4.0 * G() / 3.0) / rho());
+}
+
+void DampedElastic::updateStress(gpic::Particles& p, const gpic::ParticleBlock& block,
+                                 double dt) const
+{
+    const double G2 = 2.0 * G();
+    const double alpha1 = K() + 2.0 * G2 / 3.0;
+    const double alpha2 = K() - G2 / 3.0;
+    // dt = 0 (e.g. an initial stress evaluation) has no rate: no viscous stress.
+    const double etaByDt = dt > 0 ? eta_ / dt : 0.0;
+    std::vector<double>& sigmaV = p.history("sigmaV");
+    for (std::size_t i = block.begin; i < block.end; ++i) {
+        gpic::SymTensor& s = p.sigma[i];
+        const gpic::SymTensor& de = p.dEps[i];
+        // Remove last step's viscous stress so that s holds the elastic part only.
+        s[XX] -= sigmaV[i];
+        s[YY] -= sigmaV[i];
+        s[ZZ] -= sigmaV[i];
+        gpic::rotateJaumann(s, p.dOmega[i]);
+        s[XX] += alpha1 * de[XX] + alpha2 * de[YY];
+        s[YY] += alpha2 * de[XX] + alpha1 * de[YY];
+        s[ZZ] += alpha2 * (de[XX] + de[YY]);
+        s[XY] += G2 * de[XY];
+        sigmaV[i] = etaByDt * (de[XX] + de[YY]);
+        s[XX] += sigmaV[i];
+        s[YY] += sigmaV[i];
+        s[ZZ] += sigmaV[i];
+    }
+}
+
+} // namespace myMaterial
