@@ -11,3 +11,15 @@ set_tests_properties(pluginExample PROPERTIES
   TIMEOUT 600
   LABELS integration
   ENVIRONMENT "CMAKE=${CMAKE_COMMAND};CXX=${CMAKE_CXX_COMPILER}")
+
+# Each tutorial's Allrun must print its error-against-run-time table and write its plots.
+foreach(tutorial "verification/elasticBar;bar.png;error.png"
+                 "verification/twoDisks;energy.png;error.png")
+  list(GET tutorial 0 path)
+  list(SUBLIST tutorial 1 -1 plots)
+  string(REPLACE "/" "_" name "tutorial_${path}")
+  add_test(NAME ${name}
+           COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/scripts/tutorialRun.sh
+                   ${PROJECT_SOURCE_DIR} ${PROJECT_BINARY_DIR} ${path} ${plots})
+  set_tests_properties(${name} PROPERTIES TIMEOUT 600 LABELS integration)
+endforeach()
