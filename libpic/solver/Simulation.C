@@ -151,15 +151,13 @@ void Simulation::write()
     PvdCollection pvd(pvdPath(dir));
     pvd.add(time_, name + "/particles.vtp", 0);
     if (writeGrid_) pvd.add(time_, name + "/grid.vti", 1);
-    if (timeControl_->purgeWrite() > 0) {
-        auto times = listTimeDirectories(dir);
-        while (static_cast<int>(times.size()) > timeControl_->purgeWrite()) {
-            if (times.front().second != context_.startTimeName || times.size() > 1) {
-                pvd.removeTime(times.front().first);
-                removeTimeDirectory(dir, times.front().second);
-            }
-            times.erase(times.begin());
-        }
+    // purgeWrite: like OpenFOAM, only directories this run wrote are removed, never the start.
+    written_.push_back({time_, name});
+    while (timeControl_->purgeWrite() > 0 &&
+           static_cast<int>(written_.size()) > timeControl_->purgeWrite()) {
+        pvd.removeTime(written_.front().first);
+        removeTimeDirectory(dir, written_.front().second);
+        written_.pop_front();
     }
     pvd.write();
 }
