@@ -21,6 +21,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include <unistd.h>
+
 namespace fs = std::filesystem;
 using namespace gpic;
 
@@ -74,7 +76,7 @@ Particles sampleParticles(std::size_t n = 50)
     for (std::size_t i = 0; i < n; ++i) {
         p.id[i] = static_cast<int>(1000 + i);
         p.x0[i] += Vector2(u(rng), u(rng)) * 1e-3;
-        p.v[i] = Vector2(u(rng), u(rng)) * M_PI;
+        p.v[i] = Vector2(u(rng), u(rng)) * 3.141592653589793;
         p.V[i] = std::ldexp(u(rng), -1060);  // subnormal
         p.sigma[i] = SymTensor(u(rng), u(rng), u(rng), u(rng)) * 1e5;
         p.eps[i] = SymTensor(u(rng), u(rng), u(rng), u(rng)) * 1e-3;
@@ -161,8 +163,10 @@ TEST_F(VtkIo, particlesFileLayout)
     EXPECT_NE(text.find("NumberOfVerts=\"5\""), std::string::npos);
     for (const char* array :
          {"Name=\"id\"", "Name=\"velocity\" NumberOfComponents=\"3\"",
-          "Name=\"displacement\" NumberOfComponents=\"3\"", "Name=\"halfSize\" NumberOfComponents=\"2\"",
-          "Name=\"stress\" NumberOfComponents=\"9\"", "Name=\"plasticStrain\" NumberOfComponents=\"9\"",
+          "Name=\"displacement\" NumberOfComponents=\"3\"",
+          "Name=\"halfSize\" NumberOfComponents=\"2\"",
+          "Name=\"stress\" NumberOfComponents=\"9\"",
+          "Name=\"plasticStrain\" NumberOfComponents=\"9\"",
           "Name=\"pressure\"", "Name=\"vonMisesStress\"", "Name=\"kappa\"", "Name=\"TimeValue\"",
           "Name=\"materialNames\"", "Name=\"bodyNames\""})
         EXPECT_NE(text.find(array), std::string::npos) << array;
@@ -228,6 +232,32 @@ TEST_F(VtkIo, truncatedFileGivesInputError)
     }
 }
 
+TEST_F(VtkIo, corruptHeadersGiveInputError)
+{
+    // Corruptions that crash VTK 9.1 itself unless caught before it parses the file.
+    const std::string good = file("good.vtp");
+    writeParticles(good, sampleParticles(8), 0.0, {"sand"}, {"column"});
+    const std::string text = readText(good);
+    const auto corrupt = [&](const std::string& from, const std::string& to) {
+        std::string bad = text;
+        const auto at = bad.find(from);
+        ASSERT_NE(at, std::string::npos) << from;
+        bad.replace(at, from.size(), to);
+        writeText(file("bad.vtp"), bad);
+        SCOPED_TRACE(from + " -> " + to);
+        expectInputError(file("bad.vtp"), "cannot read particles");
+    };
+    corrupt("type=\"Float64\" Name=\"TimeValue\"", "type=\"Float6@\" Name=\"TimeValue\"");
+    corrupt("header_type=\"UInt64\"", "header_type=\"UInt32\"");
+    corrupt("header_type=\"UInt64\"", "heaDer_type=\"UInt64\"");
+    corrupt("raw\">\n ", "raw\">\n\x19");
+    corrupt("NumberOfPoints=\"8\"", "NumberOfPoints=\"9\"");
+    // The byte count of the first string array (materialNames, "sand\0" = 5 bytes).
+    const std::string count("\x05\0\0\0\0\0\0\0sand", 12);
+    corrupt(count, std::string("\x05\0\0\0\0\0\0\x7fsand", 12));
+    corrupt(count, std::string("\x04\0\0\0\0\0\0\0sand", 12));
+}
+
 TEST_F(VtkIo, missingArrayGivesInputError)
 {
     const std::string path = file("p.vtp");
@@ -288,7 +318,8 @@ TEST_F(VtkIo, pvdAddReplaceRemoveReload)
                          "byte_order=\"LittleEndian\">\n  <Collection>\n",
                          0),
               0u);
-    EXPECT_NE(text.find("<DataSet timestep=\"0.25\" group=\"\" part=\"0\" file=\"0.25/particles.vtp\"/>"),
+    EXPECT_NE(text.find("<DataSet timestep=\"0.25\" group=\"\" part=\"0\" "
+                        "file=\"0.25/particles.vtp\"/>"),
               std::string::npos);
 
     PvdCollection reloaded(path);

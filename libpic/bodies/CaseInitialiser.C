@@ -16,10 +16,13 @@ InitialiseSummary initialiseCase(const std::string& dir)
     Plugins::open(control, "libs");
     const Dictionary gridDict = readCaseFile(dir, "constant/grid");
     const Grid grid(gridDict);
+    readBoundaries(gridDict);  // only checked here: a bad side type fails now, not in picSolver
     const Dictionary materialsDict = readCaseFile(dir, "constant/materials");
     const auto materials = readMaterials(materialsDict);
     const Dictionary bodiesDict = readCaseFile(dir, "constant/bodies");
     const auto filled = fillBodies(bodiesDict, grid, materials, readGravity(dir));
+    gridDict.warnUnused();
+    materialsDict.warnUnused();
     bodiesDict.warnUnused();
 
     const double t0 = control.getOrDefault<double>("startTime", 0.0);

@@ -43,7 +43,10 @@ public:
 //  reports through its own object, which an observer on the reader does not see).
 class QuietVtk {
 public:
-    QuietVtk() : previous_(vtkObject::GetGlobalWarningDisplay()) { vtkObject::GlobalWarningDisplayOff(); }
+    QuietVtk() : previous_(vtkObject::GetGlobalWarningDisplay())
+    {
+        vtkObject::GlobalWarningDisplayOff();
+    }
     ~QuietVtk() { vtkObject::SetGlobalWarningDisplay(previous_); }
     QuietVtk(const QuietVtk&) = delete;
     QuietVtk& operator=(const QuietVtk&) = delete;
@@ -135,19 +138,22 @@ GridVtkInfo readGridInfo(const std::string& path)
         try {
             reader->Update();  // a corrupt block header can ask for an absurd allocation
         } catch (const std::exception& e) {
-            throw InputError(path, 0, std::string("cannot read grid: corrupt data (") + e.what() + ")");
+            throw InputError(path, 0,
+                             std::string("cannot read grid: corrupt data (") + e.what() + ")");
         }
     }
     vtkImageData* image = reader->GetOutput();
     if (errors->failed || !image)
-        throw InputError(path, 0, "cannot read grid: " +
-                                      (errors->first.empty() ? "VTK returned no data" : errors->first));
+        throw InputError(path, 0,
+                         "cannot read grid: " +
+                             (errors->first.empty() ? "VTK returned no data" : errors->first));
 
     GridVtkInfo info;
     image->GetDimensions(info.dimensions.data());
     image->GetOrigin(info.origin.data());
     image->GetSpacing(info.spacing.data());
-    vtkDataArray* timeA = image->GetFieldData() ? image->GetFieldData()->GetArray("TimeValue") : nullptr;
+    vtkFieldData* fd = image->GetFieldData();
+    vtkDataArray* timeA = fd ? fd->GetArray("TimeValue") : nullptr;
     if (timeA && timeA->GetNumberOfTuples() > 0) info.time = timeA->GetComponent(0, 0);
     vtkPointData* pd = image->GetPointData();
     for (int k = 0; pd && k < pd->GetNumberOfArrays(); ++k)

@@ -21,6 +21,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
+#include <cerrno>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -68,7 +70,10 @@ public:
 //  parser reports through its own object, which an observer on the reader does not see).
 class QuietVtk {
 public:
-    QuietVtk() : previous_(vtkObject::GetGlobalWarningDisplay()) { vtkObject::GlobalWarningDisplayOff(); }
+    QuietVtk() : previous_(vtkObject::GetGlobalWarningDisplay())
+    {
+        vtkObject::GlobalWarningDisplayOff();
+    }
     ~QuietVtk() { vtkObject::SetGlobalWarningDisplay(previous_); }
     QuietVtk(const QuietVtk&) = delete;
     QuietVtk& operator=(const QuietVtk&) = delete;
@@ -157,6 +162,16 @@ std::string attribute(const std::string& element, const std::string& name)
     return element.substr(begin, close == std::string::npos ? std::string::npos : close - begin);
 }
 
+//- A whole-string unsigned decimal count.
+bool parseCount(const std::string& text, std::uint64_t& value)
+{
+    if (text.empty() || !std::isdigit(static_cast<unsigned char>(text.front()))) return false;
+    char* tail = nullptr;
+    errno = 0;
+    value = std::strtoull(text.c_str(), &tail, 10);
+    return *tail == '\0' && errno == 0;
+}
+
 //- VTK 9.1 crashes instead of failing on some corrupt files: an unknown array type (null
 //  dereference), a wrong header_type or a string array whose byte count runs past the end
 //  (overrun), a bad compressed-block header (SIGFPE). So accept only the layout writeParticles
@@ -164,9 +179,10 @@ std::string attribute(const std::string& element, const std::string& name)
 //  the file, string blocks properly terminated) and check it before VTK sees the file.
 void checkLayout(const std::string& path)
 {
-    static const std::array<const char*, 12> known{"Int8",  "UInt8",  "Int16",   "UInt16",
-                                                   "Int32", "UInt32", "Int64",   "UInt64",
-                                                   "Float32", "Float64", "String", "Bit"};
+    // Known types and their sizes (0: not checked by size).
+    static const std::array<std::pair<const char*, std::uint64_t>, 12> known{{
+        {"Int8", 1}, {"UInt8", 1}, {"Int16", 2}, {"UInt16", 2}, {"Int32", 4}, {"UInt32", 4},
+        {"Int64", 8}, {"UInt64", 8}, {"Float32", 4}, {"Float64", 8}, {"String", 0}, {"Bit", 0}}};
     std::ifstream in(path, std::ios::binary);
     in.seekg(0, std::ios::end);
     const auto fileSize = static_cast<std::uint64_t>(in.tellg());
@@ -193,33 +209,72 @@ void checkLayout(const std::string& path)
     const auto file = header.find("<VTKFile");
     const std::string root =
         file == std::string::npos ? "" : header.substr(file, header.find('>', file) - file);
-    if (attribute(root, "header_type") != "UInt64" || root.find(" compressor=") != std::string::npos)
+    if (attribute(root, "header_type") != "UInt64" ||
+        root.find(" compressor=") != std::string::npos)
         cannotRead(path, "not written by writeParticles (expected header_type=\"UInt64\" and no "
                          "compressor)");
 
+    // Point arrays have NumberOfPoints tuples; with the byte counts checked against it, a
+    // corrupt count cannot make VTK allocate more than the file holds.
+    const auto piece = header.find("<Piece");
+    const std::string pieceElement =
+        piece == std::string::npos ? "" : header.substr(piece, header.find('>', piece) - piece);
+    std::uint64_t nPoints = 0;
+    if (!parseCount(attribute(pieceElement, "NumberOfPoints"), nPoints))
+        cannotRead(path, "no NumberOfPoints");
+    const auto inside = [&](std::size_t pos, const char* open, const char* close) {
+        const auto o = header.rfind(open, pos);
+        const auto c = header.rfind(close, pos);
+        return o != std::string::npos && (c == std::string::npos || c < o);
+    };
+
     for (const char* name : {"<DataArray", "<Array"}) {
-        for (auto pos = header.find(name); pos != std::string::npos; pos = header.find(name, pos + 1)) {
+        for (auto pos = header.find(name); pos != std::string::npos;
+             pos = header.find(name, pos + 1)) {
             const auto end = header.find('>', pos);
             const std::string element =
                 header.substr(pos, end == std::string::npos ? std::string::npos : end - pos);
+            const std::string arrayName = attribute(element, "Name");
             const std::string type = attribute(element, "type");
-            if (std::find_if(known.begin(), known.end(), [&](const char* k) { return type == k; }) ==
-                known.end())
-                cannotRead(path, "unknown array type '" + type + "'");
+            const auto kind = std::find_if(known.begin(), known.end(),
+                                           [&](const auto& k) { return type == k.first; });
+            if (kind == known.end()) cannotRead(path, "unknown array type '" + type + "'");
             if (attribute(element, "format") != "appended")
-                cannotRead(path, "array '" + attribute(element, "Name") + "' is not appended data");
+                cannotRead(path, "array '" + arrayName + "' is not appended data");
 
             // Each block is a UInt64 byte count followed by that many bytes.
-            const std::string offsetText = attribute(element, "offset");
-            char* tail = nullptr;
-            const std::uint64_t offset = std::strtoull(offsetText.c_str(), &tail, 10);
-            std::uint64_t bytes = 0;
+            std::uint64_t offset = 0, bytes = 0;
+            const bool offsetOk = parseCount(attribute(element, "offset"), offset);
             const std::uint64_t at = dataStart + offset;
-            if (offsetText.empty() || *tail != '\0' || at > fileSize || fileSize - at < 8 ||
+            if (!offsetOk || offset > fileSize || at > fileSize || fileSize - at < 8 ||
                 !in.seekg(static_cast<std::streamoff>(at)) ||
-                !in.read(reinterpret_cast<char*>(&bytes), sizeof bytes) || bytes > fileSize - at - 8)
-                cannotRead(path, "data of array '" + attribute(element, "Name") +
-                                     "' lies outside the file");
+                !in.read(reinterpret_cast<char*>(&bytes), sizeof bytes) ||
+                bytes > fileSize - at - 8)
+                cannotRead(path, "truncated or corrupt: data of array '" + arrayName +
+                                     "' runs past the end of the file");
+            std::uint64_t tuples = 0, components = 1;
+            const bool pointArray = inside(pos, "<PointData", "</PointData>") ||
+                                    inside(pos, "<Points>", "</Points>");
+            const bool counted = pointArray || !attribute(element, "NumberOfTuples").empty();
+            if (pointArray) tuples = nPoints;
+            else if (counted && !parseCount(attribute(element, "NumberOfTuples"), tuples))
+                cannotRead(path, "bad NumberOfTuples of array '" + arrayName + "'");
+            if (!attribute(element, "NumberOfComponents").empty() &&
+                !parseCount(attribute(element, "NumberOfComponents"), components))
+                cannotRead(path, "bad NumberOfComponents of array '" + arrayName + "'");
+            bool sizeOk = true;
+            if (counted && kind->second > 0) {
+                // Divide rather than multiply, so that corrupt counts cannot overflow.
+                if (tuples == 0 || components == 0) sizeOk = bytes == 0;
+                else if (components > fileSize) sizeOk = false;
+                else sizeOk = bytes % (components * kind->second) == 0 &&
+                              bytes / (components * kind->second) == tuples;
+            }
+            if (!sizeOk)
+                cannotRead(path, "array '" + arrayName + "' holds " +
+                                     std::to_string(bytes) + " bytes, expected " +
+                                     std::to_string(tuples) + " tuples of " +
+                                     std::to_string(components) + " " + type);
             if (type == "String") {
                 // NumberOfTuples strings, each terminated by '\0', filling the block exactly.
                 std::string block(bytes, '\0');
@@ -227,7 +282,7 @@ void checkLayout(const std::string& path)
                 const auto strings = std::count(block.begin(), block.end(), '\0');
                 if (!in || (bytes > 0 && block.back() != '\0') ||
                     std::to_string(strings) != attribute(element, "NumberOfTuples"))
-                    cannotRead(path, "corrupt string array '" + attribute(element, "Name") + "'");
+                    cannotRead(path, "corrupt string array '" + arrayName + "'");
             }
         }
     }
@@ -349,7 +404,8 @@ void writeParticles(const std::string& path, const Particles& p, double time,
     }
     pd->AddArray(pressure);
     pd->AddArray(vonMises);
-    for (const auto& name : p.historyNames()) pd->AddArray(scalarArray(name.c_str(), p.history(name)));
+    for (const auto& name : p.historyNames())
+        pd->AddArray(scalarArray(name.c_str(), p.history(name)));
 
     // "TimeValue" is the field ParaView shows as the dataset time.
     vtkFieldData* fd = poly->GetFieldData();

@@ -64,7 +64,8 @@ std::map<std::string, std::string> attributes(const std::string& element)
     std::size_t i = 0;
     while ((i = element.find('=', i)) != std::string::npos) {
         std::size_t nameEnd = i;
-        while (nameEnd > 0 && std::isspace(static_cast<unsigned char>(element[nameEnd - 1]))) --nameEnd;
+        while (nameEnd > 0 && std::isspace(static_cast<unsigned char>(element[nameEnd - 1])))
+            --nameEnd;
         std::size_t nameBegin = nameEnd;
         while (nameBegin > 0 && !std::isspace(static_cast<unsigned char>(element[nameBegin - 1])) &&
                element[nameBegin - 1] != '"' && element[nameBegin - 1] != '\'')
@@ -144,9 +145,8 @@ void PvdCollection::add(double time, const std::string& relativeFile, int part)
 
 void PvdCollection::removeAfter(double time)
 {
-    entries_.erase(std::remove_if(entries_.begin(), entries_.end(),
-                                  [&](const PvdEntry& e) { return e.time > time && !sameTime(e.time, time); }),
-                   entries_.end());
+    const auto later = [&](const PvdEntry& e) { return e.time > time && !sameTime(e.time, time); };
+    entries_.erase(std::remove_if(entries_.begin(), entries_.end(), later), entries_.end());
 }
 
 void PvdCollection::removeTime(double time)

@@ -32,7 +32,8 @@ bool sameTime(double a, double b)
     return std::abs(a - b) <= 1e-12 * std::max(std::abs(a), std::abs(b));
 }
 
-[[noreturn]] void fsFailure(const std::string& what, const fs::path& path, const std::error_code& ec)
+[[noreturn]] void fsFailure(const std::string& what, const fs::path& path,
+                            const std::error_code& ec)
 {
     throw RunError("cannot " + what + " " + path.string() + ": " + ec.message());
 }

@@ -41,9 +41,13 @@ void remapMaterials(Particles& p, const std::vector<std::string>& stored,
     for (std::size_t s = 0; s < stored.size(); ++s) {
         for (std::size_t c = 0; c < current.size(); ++c)
             if (stored[s] == current[c]) map[s] = static_cast<int>(c);
-        if (map[s] < 0)
+        if (map[s] < 0) {
+            std::string valid;
+            for (const auto& c : current) valid += (valid.empty() ? "" : ", ") + c;
             throw InputError(file, 0, "material '" + stored[s] +
-                                          "' of the particles is not in constant/materials");
+                                          "' of the particles is not in constant/materials; "
+                                          "valid choices: " + valid);
+        }
     }
     for (auto& m : p.material) {
         if (m < 0 || m >= static_cast<int>(map.size()))
@@ -72,7 +76,10 @@ Simulation::Simulation(const RunOptions& options)
     std::string startName;
     if (options_.startTime) startName = findTime(dir, *options_.startTime);
     else if (timeControl_->startFrom() == "latestTime") startName = latestTime(dir);
-    else if (timeControl_->startFrom() == "firstTime") startName = listTimeDirectories(dir).front().second;
+    else if (timeControl_->startFrom() == "firstTime") {
+        const auto times = listTimeDirectories(dir);
+        startName = times.empty() ? latestTime(dir) /* throws: no time directory */ : times.front().second;
+    }
     else startName = findTime(dir, timeControl_->startTime());
 
     Dictionary gridDict = readCaseFile(dir, "constant/grid");
@@ -179,8 +186,13 @@ long Simulation::run()
     for (auto& f : functions_) f->start(*solver_, time_);
     bool writtenLast = true;
     while (!timeControl_->finished(time_)) {
-        deltaT_ = timeControl_->deltaT(time_, solver_->criticalTimeStep());
-        scheme_->advance(*solver_, deltaT_);
+        try {
+            deltaT_ = timeControl_->deltaT(time_, solver_->criticalTimeStep());
+            scheme_->advance(*solver_, deltaT_);
+        } catch (const RunError& e) {
+            throw RunError(std::string(e.what()) + " (step " + std::to_string(step_ + 1) +
+                           " from t = " + exact(time_) + " s)");
+        }
         const double tPrevious = time_;
         time_ += deltaT_;
         ++step_;

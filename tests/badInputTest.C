@@ -1,0 +1,389 @@
+// Bad input, as a user meets it: the real picInit and picSolver run as processes on a copy of
+// the twoDisks tutorial with one defect each. Every defect must give exactly one stderr line
+// "Error: ..." (warnings aside) that names the file and line, the keyword and, where there is
+// a choice, the valid choices; exit status 1 for bad input and 2 for a failed run, never a
+// crash; and the time directories written before stay byte for byte as they were, with no
+// temporary directory left behind.
+#include "io/ParticlesVtk.H"
+#include "particles/Particles.H"
+#include "support/Applications.H"
+#include "support/CaseRunner.H"
+
+#include <algorithm>
+
+using namespace gpic::test;
+
+namespace {
+
+constexpr int badInput = 1;
+constexpr int runFailed = 2;
+
+class BadInput : public ::testing::Test {
+protected:
+    ScratchDir scratch{"badInput"};
+    fs::path dir = scratch.path() / "twoDisks";
+
+    fs::path controlDict() const { return dir / "system/controlDict"; }
+    fs::path materials() const { return dir / "constant/materials"; }
+    fs::path grid() const { return dir / "constant/grid"; }
+    fs::path bodies() const { return dir / "constant/bodies"; }
+    fs::path schemes() const { return dir / "system/mpmSchemes"; }
+
+    void SetUp() override
+    {
+        copyCase(tutorialPath("verification/twoDisks"), dir);
+        // Writes 0.1 and 0.2 in 200 steps: a fraction of a second.
+        setEntry(controlDict(), "endTime", "0.2");
+    }
+
+    //- The case runs as it is: picInit and picSolver succeed, leaving 0, 0.1 and 0.2.
+    void startGood()
+    {
+        for (const char* app : {"picInit", "picSolver"}) {
+            const AppResult r = runApplication(app, dir);
+            ASSERT_EQ(r.exitCode, 0) << app << ": " << r.err;
+        }
+        ASSERT_TRUE(fs::exists(dir / "0.2/particles.vtp"));
+    }
+
+    //- `app` must refuse the case with exit status `code` and one error line holding each
+    //  of `mentions`, and leave the existing time directories as they were.
+    AppResult expectRejected(const std::string& app, int code, const std::vector<std::string>& mentions,
+                             const std::string& args = "")
+    {
+        SCOPED_TRACE(app + " " + args);
+        const TimeSnapshot before = snapshotTimes(dir);
+        const AppResult r = runApplication(app, dir, args);
+        EXPECT_FALSE(r.signalled) << "crashed: " << r.command;
+        EXPECT_EQ(r.exitCode, code) << r.err;
+        EXPECT_EQ(r.errorLines.size(), 1u) << "stderr should be one error line:\n" << r.err;
+        if (!r.errorLines.empty()) {
+            const std::string& line = r.errorLines.front();
+            EXPECT_EQ(line.rfind("Error: ", 0), 0u) << line;
+            for (const auto& m : mentions)
+                EXPECT_NE(line.find(m), std::string::npos) << "'" << m << "' is not in\n" << line;
+        }
+        expectTimesUntouched(dir, before);
+        expectNoTemporaries(dir);
+        return r;
+    }
+
+    //- Both applications read this file: both must refuse it with the same message.
+    void expectBothReject(const std::vector<std::string>& mentions)
+    {
+        const AppResult init = expectRejected("picInit", badInput, mentions);
+        const AppResult solver = expectRejected("picSolver", badInput, mentions);
+        EXPECT_EQ(init.errorLines, solver.errorLines);
+    }
+};
+
+//- Append `text` as a new last line of `file`; returns its line number.
+int appendLine(const fs::path& file, const std::string& text)
+{
+    std::string s = readText(file);
+    if (!s.empty() && s.back() != '\n') s += '\n';
+    s += text + '\n';
+    std::ofstream(file) << s;
+    return static_cast<int>(std::count(s.begin(), s.end(), '\n'));
+}
+
+} // namespace
+
+// --- Syntax ---------------------------------------------------------------------------------
+
+TEST_F(BadInput, aMissingSemicolonIsASyntaxErrorAtItsLine)
+{
+    startGood();
+    replaceText(materials(), "E       1000;", "E       1000");
+    expectBothReject({"constant/materials:7:", "'E'", "missing ';'"});
+}
+
+TEST_F(BadInput, anUnclosedBraceNamesTheDictionaryLeftOpen)
+{
+    startGood();
+    replaceText(materials(), "nu      0.3;\n}", "nu      0.3;\n");
+    expectBothReject({"constant/materials:4:", "'{'", "constant/materials/rubber", "'}'"});
+}
+
+TEST_F(BadInput, aStrayClosingBraceIsReportedAtItsLine)
+{
+    startGood();
+    const int line = appendLine(materials(), "}");
+    expectBothReject({"constant/materials:" + std::to_string(line) + ":", "'}'"});
+}
+
+TEST_F(BadInput, anUnterminatedCommentIsReportedWhereItOpens)
+{
+    startGood();
+    replaceText(materials(), "nu      0.3;", "nu      0.3;  /* Poisson's ratio");
+    expectBothReject({"constant/materials:8:", "unterminated comment", "*/"});
+}
+
+// --- Files ----------------------------------------------------------------------------------
+
+TEST_F(BadInput, aMissingFileIsNamed)
+{
+    startGood();
+    fs::remove(materials());
+    expectBothReject({"constant/materials", "cannot open"});
+}
+
+TEST_F(BadInput, aMissingIncludeFileIsNamedAtTheIncludingLine)
+{
+    startGood();
+    replaceText(materials(), "rubber\n{", "#include \"rubberDefaults\"\nrubber\n{");
+    expectBothReject({"constant/materials:3:", "#include", "rubberDefaults"});
+}
+
+TEST_F(BadInput, aMissingLibraryInLibsIsNamedWithItsLine)
+{
+    startGood();
+    const int line = appendLine(controlDict(), "libs (\"libnotThere.so\");");
+    expectBothReject({"system/controlDict:" + std::to_string(line) + ":", "libnotThere.so", "cannot load"});
+}
+
+// --- Run-time selection: an unknown type lists the valid ones -------------------------------
+
+TEST_F(BadInput, anUnknownMaterialTypeListsTheValidTypes)
+{
+    startGood();
+    replaceText(materials(), "linearElastic", "linearElastik");
+    expectBothReject({"constant/materials:5:", "'linearElastik'", "valid choices:", "linearElastic"});
+}
+
+TEST_F(BadInput, anUnknownBoundaryTypeListsTheValidTypes)
+{
+    // picInit checks the sides too, so the mistake shows before the particles are made.
+    startGood();
+    replaceText(grid(), "left    { type free; }", "left    { type fre; }");
+    expectBothReject({"constant/grid:10:", "'fre'", "boundaries/left", "fixed, free, slip, symmetry"});
+}
+
+TEST_F(BadInput, anUnknownUpdateSchemeListsTheValidSchemes)
+{
+    startGood();
+    setEntry(schemes(), "updateScheme", "USX");
+    expectRejected("picSolver", badInput,
+                   {"system/mpmSchemes:3:", "updateScheme", "'USX'", "MUSL, USF, USL"});
+}
+
+TEST_F(BadInput, anUnknownShapeFunctionListsTheValidOnes)
+{
+    startGood();
+    setEntry(schemes(), "shapeFunction", "trilinear");
+    expectRejected("picSolver", badInput,
+                   {"system/mpmSchemes:4:", "shapeFunction", "'trilinear'", "bilinear, uGIMP"});
+}
+
+TEST_F(BadInput, anUnknownBodyShapeListsTheValidShapes)
+{
+    startGood();
+    replaceText(bodies(), "type circle", "type square");
+    expectRejected("picInit", badInput,
+                   {"constant/bodies:7:", "'square'", "upperLeft/shape", "circle, polygon, rectangle"});
+}
+
+TEST_F(BadInput, anUnknownStartFromWordListsTheValidWords)
+{
+    startGood();
+    setEntry(controlDict(), "startFrom", "lastTime");
+    expectRejected("picSolver", badInput,
+                   {"system/controlDict:5:", "startFrom", "'lastTime'", "startTime, firstTime, latestTime"});
+}
+
+TEST_F(BadInput, aBodyMaterialNotInConstantMaterialsListsTheMaterials)
+{
+    startGood();
+    replaceText(bodies(), "material         rubber;", "material         rubbr;");
+    expectRejected("picInit", badInput,
+                   {"constant/bodies:6:", "material", "'rubbr'", "valid choices: rubber"});
+}
+
+TEST_F(BadInput, aRenamedMaterialNoLongerMatchingTheParticlesListsTheMaterials)
+{
+    // The particles of 0.2 carry the material name "rubber": a restart must not guess.
+    startGood();
+    replaceText(materials(), "rubber\n{", "gum\n{");
+    expectRejected("picSolver", badInput,
+                   {"0.2/particles.vtp", "'rubber'", "constant/materials", "valid choices: gum"});
+}
+
+// --- Values ---------------------------------------------------------------------------------
+
+TEST_F(BadInput, aMissingRequiredKeywordIsNamed)
+{
+    startGood();
+    replaceText(materials(), "    E       1000;       // Pa\n", "");
+    expectBothReject({"constant/materials:3:", "'E'", "undefined", "constant/materials/rubber"});
+}
+
+TEST_F(BadInput, aNonPositiveYoungsModulusIsRefused)
+{
+    startGood();
+    for (const char* E : {"0", "-1000"}) {
+        setEntry(materials(), "E", E);
+        expectBothReject({"constant/materials:7:", "'E'", "E > 0"});
+    }
+}
+
+TEST_F(BadInput, aPoissonRatioOutsideMinusOneToOneHalfIsRefused)
+{
+    // 0.5 makes the bulk modulus infinite, -1 the shear modulus.
+    startGood();
+    for (const char* nu : {"0.5", "0.7", "-1", "-1.5"}) {
+        setEntry(materials(), "nu", nu);
+        expectBothReject({"constant/materials:8:", "'nu'", "-1 < nu < 0.5"});
+    }
+}
+
+TEST_F(BadInput, aNonPositiveDensityIsRefused)
+{
+    startGood();
+    for (const char* rho : {"0", "-1000"}) {
+        setEntry(materials(), "rho", rho);
+        expectBothReject({"constant/materials:6:", "'rho'", "rho > 0"});
+    }
+}
+
+TEST_F(BadInput, aWordWhereANumberBelongsIsRefused)
+{
+    startGood();
+    setEntry(controlDict(), "endTime", "four");
+    expectRejected("picSolver", badInput, {"system/controlDict:8:", "endTime", "'four'", "number"});
+}
+
+TEST_F(BadInput, aVectorOfTheWrongSizeIsRefused)
+{
+    startGood();
+    for (const char* size : {"(1 2 3)", "(1 2 3 4)", "(1)"}) {
+        setEntry(grid(), "cellSize", size);
+        expectBothReject({"constant/grid:4:", "cellSize", size});
+    }
+}
+
+TEST_F(BadInput, aNonPositiveWriteIntervalIsRefused)
+{
+    startGood();
+    for (const char* interval : {"0", "-0.1"}) {
+        setEntry(controlDict(), "writeInterval", interval);
+        expectRejected("picSolver", badInput,
+                       {"system/controlDict:11:", "writeInterval", "writeInterval > 0"});
+    }
+}
+
+TEST_F(BadInput, aBodyReachingOutsideTheGridIsRefused)
+{
+    startGood();
+    replaceText(bodies(), "centre (0.8 0.2)", "centre (0.9 0.2)");
+    expectRejected("picInit", badInput,
+                   {"constant/bodies:15:", "shape", "'lowerRight'", "outside the grid", "(1.1 0.4)"});
+}
+
+TEST_F(BadInput, aFixedTimeStepAboveTheStabilityLimitGivesTheLimit)
+{
+    // h / (c + |v|) = 0.04 / (1.16024 + 0.141421) = 0.03073 s, with the P-wave speed
+    // c = sqrt((K + 4G/3) / rho) of E = 1000 Pa, nu = 0.3, rho = 1000 and |v| = 0.1 sqrt(2).
+    startGood();
+    setEntry(controlDict(), "deltaT", "0.1");
+    expectRejected("picSolver", badInput,
+                   {"system/controlDict:9:", "deltaT", "stability limit 0.03073 s", "adjustTimeStep"});
+    EXPECT_FALSE(fs::exists(dir / "0.3")) << "no step may be taken";
+}
+
+// --- Time directories -----------------------------------------------------------------------
+
+TEST_F(BadInput, anUnreadableLatestTimeDirectoryIsNamed)
+{
+    startGood();
+    std::ofstream(dir / "0.2/particles.vtp") << "garbage\n";
+    expectRejected("picSolver", badInput, {"0.2/particles.vtp", "cannot read particles"});
+}
+
+TEST_F(BadInput, aBrokenTimeFileIsNamedWithItsLine)
+{
+    startGood();
+    std::ofstream(dir / "0.2/uniform/time") << "value 0.2;\nindex {\n";
+    expectRejected("picSolver", badInput, {"0.2/uniform/time:2:", "'{'"});
+}
+
+TEST_F(BadInput, theSolverBeforePicInitFindsNoTimeDirectoryWhateverStartFrom)
+{
+    // No startGood: the case has no time directory at all.
+    for (const char* from : {"latestTime", "firstTime", "startTime"}) {
+        setEntry(controlDict(), "startFrom", from);
+        expectRejected("picSolver", badInput, {dir.string() + ": ", "no time director"});
+    }
+}
+
+TEST_F(BadInput, aStartTimeWithoutItsDirectoryListsTheAvailableTimes)
+{
+    // The time itself is printed with 17 digits ("0.29999999999999999", libpic/io's
+    // findTime), so only the words and the list are checked here.
+    startGood();
+    expectRejected("picSolver", badInput,
+                   {"no time directory for time 0.", "available times: 0 0.1 0.2"}, "-time 0.3");
+}
+
+// --- Command line ---------------------------------------------------------------------------
+
+TEST_F(BadInput, anUnknownCommandLineOptionIsRefused)
+{
+    startGood();
+    expectRejected("picInit", badInput, {"command line", "unrecognised option '-bogus'", "-help"}, "-bogus");
+    expectRejected("picSolver", badInput, {"command line", "unrecognised option '--nope'", "-help"},
+                   "--nope");
+    expectRejected("picSolver", badInput, {"command line", "'abc'", "time"}, "-time abc");
+}
+
+// --- Warnings -------------------------------------------------------------------------------
+
+TEST_F(BadInput, aMistypedKeywordIsAWarningWithItsLineAndTheRunGoesOn)
+{
+    replaceText(materials(), "nu      0.3;", "nu      0.3;\n    nuu     0.3;");
+    setEntry(controlDict(), "endTime", "0.1");
+    for (const char* app : {"picInit", "picSolver"}) {
+        SCOPED_TRACE(app);
+        const AppResult r = runApplication(app, dir);
+        EXPECT_FALSE(r.signalled);
+        EXPECT_EQ(r.exitCode, 0) << r.err;
+        EXPECT_TRUE(r.errorLines.empty()) << r.err;
+        ASSERT_EQ(r.warningLines.size(), 1u) << r.err;
+        const std::string& w = r.warningLines.front();
+        EXPECT_EQ(w.rfind("Warning: constant/materials:9:", 0), 0u) << w;
+        EXPECT_NE(w.find("'nuu'"), std::string::npos) << w;
+        EXPECT_NE(w.find("not used"), std::string::npos) << w;
+    }
+    EXPECT_TRUE(fs::exists(dir / "0.1/particles.vtp"));
+}
+
+// --- Run failures (exit 2): the run stops, what was written before stays ---------------------
+
+TEST_F(BadInput, aParticleLeavingTheGridStopsTheRunAndKeepsEarlierTimes)
+{
+    // Strong gravity pulls the lower disk, which touches the free bottom side, out of the grid.
+    startGood();
+    std::ofstream(dir / "constant/g") << "value (0 -100);\n";
+    setEntry(controlDict(), "endTime", "4");
+    expectRejected("picSolver", runFailed, {"run stopped", "particle", "outside the grid"});
+}
+
+TEST_F(BadInput, particlesSpeedingPastAFixedStepStopTheRunWithTheLimit)
+{
+    // deltaT 0.025 s is stable at the start (limit 0.0307 s) but not once gravity (from
+    // t = 0.2) has sped the upper disk past 0.44 m/s: the run writes 0.3 to 0.5 and stops at
+    // t = 0.55, before its step.
+    startGood();
+    std::ofstream(dir / "constant/g") << "value (0 -1);\n";
+    setEntry(controlDict(), "deltaT", "0.025");
+    setEntry(controlDict(), "endTime", "4");
+    expectRejected("picSolver", runFailed,
+                   {"run stopped", "at time 0.55", "stability limit", "deltaT"});
+    // The time directories of the failed run are complete.
+    for (const char* t : {"0.3", "0.4", "0.5"}) {
+        gpic::Particles p;
+        double time = 0;
+        EXPECT_NO_THROW(gpic::readParticles((dir / t / "particles.vtp").string(), p, time)) << t;
+        EXPECT_EQ(p.size(), 632u) << t;
+    }
+    EXPECT_FALSE(fs::exists(dir / "0.6"));
+}
