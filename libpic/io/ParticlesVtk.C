@@ -36,9 +36,9 @@ namespace gpic {
 namespace {
 
 // Arrays written by writeParticles; any other one-component Float64 array is a history variable.
-const std::array<const char*, 14> builtinArrays{
+const std::array<const char*, 15> builtinArrays{
     "id", "body", "material", "velocity", "displacement", "initialPosition", "mass", "volume",
-    "halfSize", "stress", "strain", "plasticStrain", "pressure", "vonMisesStress"};
+    "halfSize", "stress", "strain", "plasticStrain", "pressure", "vonMisesStress", "work"};
 
 bool isBuiltin(const std::string& name)
 {
@@ -387,6 +387,7 @@ void writeParticles(const std::string& path, const Particles& p, double time,
     pd->AddArray(vectorArray("initialPosition", p.x0, 3));
     pd->AddArray(scalarArray("mass", p.m));
     pd->AddArray(scalarArray("volume", p.V));
+    pd->AddArray(scalarArray("work", p.work));
     pd->AddArray(vectorArray("halfSize", p.halfSize, 2));
     pd->AddArray(tensorArray("stress", p.sigma));
     pd->AddArray(tensorArray("strain", p.eps));
@@ -481,6 +482,7 @@ void readParticles(const std::string& path, Particles& p, double& time,
     vtkDataArray* x0A = required(pd, "initialPosition", 3, nv, path);
     vtkDataArray* massA = required(pd, "mass", 1, nv, path);
     vtkDataArray* volumeA = required(pd, "volume", 1, nv, path);
+    vtkDataArray* workA = required(pd, "work", 1, nv, path);
     vtkDataArray* halfSizeA = required(pd, "halfSize", 2, nv, path);
     vtkDataArray* stressA = required(pd, "stress", 9, nv, path);
     vtkDataArray* strainA = required(pd, "strain", 9, nv, path);
@@ -504,6 +506,7 @@ void readParticles(const std::string& path, Particles& p, double& time,
     readVectors(x0A, result.x0);
     readScalars(massA, result.m);
     readScalars(volumeA, result.V);
+    readScalars(workA, result.work);
     readVectors(halfSizeA, result.halfSize);
     readTensors(stressA, result.sigma);
     readTensors(strainA, result.eps);

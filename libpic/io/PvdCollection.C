@@ -100,9 +100,12 @@ void PvdCollection::load()
 
     // Scan for DataSet elements rather than parse XML: the file is ours, but a user may have
     // edited it, and a broken entry should cost that entry only.
+    int line = 1;
+    std::size_t counted = 0;  // line numbers are counted incrementally: files can be long
     for (std::size_t pos = text.find("<DataSet"); pos != std::string::npos;
          pos = text.find("<DataSet", pos + 1)) {
-        const int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + pos, '\n'));
+        line += static_cast<int>(std::count(text.begin() + counted, text.begin() + pos, '\n'));
+        counted = pos;
         const std::size_t end = text.find('>', pos);
         if (end == std::string::npos) {
             warning(path_, line, "unterminated DataSet element ignored");

@@ -85,7 +85,10 @@ std::string findTime(const std::string& caseDir, double t)
     if (best && sameTime(best->first, t)) return best->second;
 
     std::ostringstream message;
-    message << "no time directory for time " << timeName(t, 17) << "; available times:";
+    // The shortest name that reads back as t: "-time 0.3" is reported as 0.3.
+    int digits = 6;
+    while (digits < 17 && std::strtod(timeName(t, digits).c_str(), nullptr) != t) ++digits;
+    message << "no time directory for time " << timeName(t, digits) << "; available times:";
     if (times.empty()) message << " none";
     for (const auto& entry : times) message << ' ' << entry.second;
     throw InputError(caseDir, 0, message.str());
