@@ -4,6 +4,7 @@
 //     sigma22 = -rho g (H - x2),   sigma11 = sigma33 = K0 sigma22,   K0 = nu / (1 - nu).
 // Checks gravity, the wall conditions, local non-viscous damping (eq. 3.3.5) driving the
 // column to that state, and picInit's geostatic initial stress holding it there.
+#include "io/ParticlesVtk.H"
 #include "support/CaseRunner.H"
 
 #include <cmath>
@@ -103,4 +104,27 @@ TEST(GeostaticColumn, uGimpSettlesASoftColumnWithoutTheCellCrossingError)
     const ColumnResult r = runColumn(1e6, 0.8, 1.5, false, "uGIMP");
     EXPECT_LT(r.stressError, 0.03);
     EXPECT_LT(r.maxSpeed, 1e-3);
+}
+
+TEST(GeostaticColumn, jakyInitialStressFromTheFrictionAngle)
+{
+    // picInit with `phi 30` and no surface: sigma22 = -rho g (top - x2), sigma11 = sigma33 =
+    // (1 - sin 30) sigma22 = sigma22 / 2 (eqs. 3.3.3, 3.3.4), top = upper edge of the shape.
+    ScratchDir scratch("jaky");
+    const fs::path dir = scratch.path() / "column";
+    writeColumnCase(dir, 1e6, 0.0, 0.1, false, "bilinear");
+    replaceText(dir / "constant/bodies", "particlesPerCell 2;",
+                "particlesPerCell 2; initialStress { type geostatic; phi 30; }");
+    gpic::initialiseCase(dir.string());
+    gpic::Particles p;
+    double time = -1;
+    gpic::readParticles((dir / "0/particles.vtp").string(), p, time);
+    ASSERT_EQ(p.size(), 800u);
+    for (std::size_t q = 0; q < p.size(); ++q) {
+        const double s22 = -rho * g * (H - p.x[q].y());
+        EXPECT_NEAR(p.sigma[q][gpic::YY], s22, 1e-9 * rho * g * H);
+        EXPECT_NEAR(p.sigma[q][gpic::XX], 0.5 * s22, 1e-9 * rho * g * H);
+        EXPECT_NEAR(p.sigma[q][gpic::ZZ], 0.5 * s22, 1e-9 * rho * g * H);
+        EXPECT_EQ(p.sigma[q][gpic::XY], 0.0);
+    }
 }

@@ -25,7 +25,7 @@ int materialIndex(const Dictionary& body, const std::vector<std::unique_ptr<Mate
 //- Initial stress at x (eqs. 3.3.1-3.3.4), tension positive.
 class InitialStress {
 public:
-    InitialStress(const Dictionary* dict, double rho, double g)
+    InitialStress(const Dictionary* dict, double rho, double g, double topOfBody)
     {
         if (!dict) return;
         type_ = dict->getWord("type", {"uniform", "geostatic"});
@@ -34,11 +34,22 @@ public:
                 "sigma", [](const std::vector<double>& v) { return v.size() == 4; },
                 "four components (s11 s22 s33 s12)");
             uniform_ = SymTensor(s[0], s[1], s[2], s[3]);
-        } else {
-            K0_ = dict->getChecked<double>("K0", [](const double& k) { return k > 0; }, "K0 > 0");
-            surface_ = dict->get<double>("surface");
-            rhoG_ = rho * g;
+            return;
         }
+        // K0 given (eq. 3.3.1; nu/(1-nu) for an elastic mass, eq. 3.3.2) or from the
+        // friction angle by Jaky's formula K0 = 1 - sin(phi) (eq. 3.3.3).
+        if (dict->found("K0") == dict->found("phi"))
+            dict->fail("K0", "geostatic initial stress needs exactly one of K0 and phi (Jaky: "
+                             "K0 = 1 - sin(phi)) in dictionary " + dict->name());
+        if (dict->found("K0"))
+            K0_ = dict->getChecked<double>("K0", [](const double& k) { return k > 0; }, "K0 > 0");
+        else
+            K0_ = 1.0 - std::sin(M_PI / 180.0 *
+                                 dict->getChecked<double>(
+                                     "phi", [](const double& p) { return p >= 0 && p < 90; },
+                                     "0 <= phi < 90 (degrees)"));
+        surface_ = dict->getOrDefault<double>("surface", topOfBody);
+        rhoG_ = rho * g;
     }
     SymTensor at(const Vector2& x) const
     {
@@ -84,7 +95,7 @@ FilledBodies fillBodies(const Dictionary& bodiesDict, const Grid& grid,
             wavenumber = mode->get<Vector2>("wavenumber");
         }
         const InitialStress stress(body.subDictPtr("initialStress"), materials[mat]->rho(),
-                                   gravity.norm());
+                                   gravity.norm(), hi.y());
         const Vector2 h = grid.cellSize();
         const double volume = h.x() * h.y() / (n * n);
         const Vector2 half(0.5 * h.x() / n, 0.5 * h.y() / n);

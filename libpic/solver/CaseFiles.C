@@ -39,7 +39,9 @@ Vector2 readGravity(const std::string& caseDir)
     if (!std::filesystem::exists(std::filesystem::path(caseDir) / "constant/g"))
         return Vector2::Zero();
     const Dictionary g = readCaseFile(caseDir, "constant/g");
-    return g.get<Vector2>("value");
+    const Vector2 value = g.get<Vector2>("value");
+    g.warnUnused();
+    return value;
 }
 
 std::string caseName(const std::string& caseDir)

@@ -3,6 +3,7 @@
 #include "applicationMain.H"
 #include "bodies/Shape.H"
 #include "boundaryConditions/BoundaryCondition.H"
+#include "contact/ContactLaw.H"
 #include "functionObjects/FunctionObject.H"
 #include "materials/Material.H"
 #include "schemes/UpdateScheme.H"
@@ -24,6 +25,7 @@ int main(int argc, char** argv)
                                  [](const auto&) {
                                      list<gpic::Material>();
                                      list<gpic::BoundaryCondition>();
+                                     list<gpic::ContactLaw>();
                                      list<gpic::ShapeFunction>();
                                      list<gpic::UpdateScheme>();
                                      list<gpic::FunctionObject>();
