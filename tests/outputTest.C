@@ -1,0 +1,66 @@
+// What a run leaves in the case: time directories at the write times, the ParaView index
+// with one part per kind of file, the optional grid, purgeWrite, and the function-object
+// file under postProcessing/<name>/<startTime>.
+#include "io/GridVtk.H"
+#include "io/PvdCollection.H"
+#include "io/TimeDirectories.H"
+#include "support/CaseRunner.H"
+
+using namespace gpic::test;
+
+namespace {
+
+fs::path twoDisks(const ScratchDir& scratch)
+{
+    const fs::path dir = scratch.path() / "twoDisks";
+    copyCase(tutorialPath("verification/twoDisks"), dir);
+    setEntry(dir / "system/controlDict", "endTime", "0.4");
+    return dir;
+}
+
+} // namespace
+
+TEST(Output, writeGridAddsTheGridAsASecondParaViewPart)
+{
+    ScratchDir scratch("grid");
+    const fs::path dir = twoDisks(scratch);
+    setEntry(dir / "system/controlDict", "writeGrid", "yes");
+    runCase(dir);
+    const gpic::GridVtkInfo info = gpic::readGridInfo((dir / "0.2/grid.vti").string());
+    EXPECT_EQ(info.dimensions[0], 26);  // 25 x 25 cells
+    EXPECT_EQ(info.dimensions[1], 26);
+    EXPECT_DOUBLE_EQ(info.spacing[0], 0.04);
+    EXPECT_DOUBLE_EQ(info.time, 0.2);
+    for (const char* field : {"mass", "velocity"})
+        EXPECT_NE(std::find(info.pointArrays.begin(), info.pointArrays.end(), field), info.pointArrays.end())
+            << field;
+    const gpic::PvdCollection pvd((dir / "twoDisks.pvd").string());
+    int particles = 0, grids = 0;
+    for (const auto& e : pvd.entries()) (e.part == 0 ? particles : grids)++;
+    EXPECT_EQ(particles, 5);  // 0, 0.1, ..., 0.4
+    EXPECT_EQ(grids, 4);      // the initial state has no grid
+}
+
+TEST(Output, noGridIsWrittenUnlessAskedFor)
+{
+    ScratchDir scratch("nogrid");
+    const fs::path dir = twoDisks(scratch);
+    runCase(dir);
+    EXPECT_TRUE(fs::exists(dir / "0.4/particles.vtp"));
+    EXPECT_FALSE(fs::exists(dir / "0.4/grid.vti"));
+    EXPECT_TRUE(fs::exists(dir / "postProcessing/motion/0/bodyMotion.dat"));
+}
+
+TEST(Output, purgeWriteKeepsTheStartAndTheLastN)
+{
+    ScratchDir scratch("purge");
+    const fs::path dir = twoDisks(scratch);
+    setEntry(dir / "system/controlDict", "purgeWrite", "2");
+    runCase(dir);
+    std::vector<std::string> names;
+    for (const auto& [t, name] : gpic::listTimeDirectories(dir.string())) names.push_back(name);
+    EXPECT_EQ(names, (std::vector<std::string>{"0", "0.3", "0.4"}));
+    const gpic::PvdCollection pvd((dir / "twoDisks.pvd").string());
+    ASSERT_EQ(pvd.entries().size(), 3u);
+    EXPECT_EQ(pvd.entries()[1].file, "0.3/particles.vtp");
+}
