@@ -2,6 +2,8 @@
 
 #include "core/error.H"
 #include "grid/Grid.H"
+#include "io/AtomicVtkWrite.H"
+#include "io/VtkErrorGuard.H"
 
 #include <vtkCommand.h>
 #include <vtkDoubleArray.h>
@@ -19,41 +21,6 @@
 namespace gpic {
 
 namespace {
-
-//- Collects VTK error events so they become exceptions instead of stderr noise.
-class ErrorCollector : public vtkCommand {
-public:
-    static ErrorCollector* New() { return new ErrorCollector; }
-    void Execute(vtkObject*, unsigned long event, void* callData) override
-    {
-        if (event != vtkCommand::ErrorEvent) return;
-        std::string text = callData ? static_cast<const char*>(callData) : "unknown VTK error";
-        // VTK prefixes "ERROR: In file.cxx, line N\nClass (0x...): "; keep only the message.
-        const auto colon = text.rfind("): ");
-        if (colon != std::string::npos) text = text.substr(colon + 3);
-        while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) text.pop_back();
-        if (first.empty()) first = text;
-        failed = true;
-    }
-    bool failed = false;
-    std::string first;
-};
-
-//- Silences VTK's global error output while parsing a possibly broken file (the XML parser
-//  reports through its own object, which an observer on the reader does not see).
-class QuietVtk {
-public:
-    QuietVtk() : previous_(vtkObject::GetGlobalWarningDisplay())
-    {
-        vtkObject::GlobalWarningDisplayOff();
-    }
-    ~QuietVtk() { vtkObject::SetGlobalWarningDisplay(previous_); }
-    QuietVtk(const QuietVtk&) = delete;
-    QuietVtk& operator=(const QuietVtk&) = delete;
-
-private:
-    int previous_;
-};
 
 vtkSmartPointer<vtkDoubleArray> nodalVectors(const char* name, const std::vector<Vector2>& v)
 {
@@ -96,30 +63,8 @@ void writeGrid(const std::string& path, const Grid& g, double time)
     timeValue->SetValue(0, time);
     image->GetFieldData()->AddArray(timeValue);
 
-    const std::string tmp = path + ".tmp";
     vtkNew<vtkXMLImageDataWriter> writer;
-    vtkNew<ErrorCollector> errors;
-    writer->AddObserver(vtkCommand::ErrorEvent, errors);
-    writer->SetInputData(image);
-    writer->SetFileName(tmp.c_str());
-    writer->SetDataModeToAppended();
-    writer->EncodeAppendedDataOff();
-    writer->SetHeaderTypeToUInt64();
-    // Uncompressed: faster to write, and VTK 9.1 crashes (SIGFPE, huge allocations) on some
-    // corrupt compressed-block headers instead of reporting an error.
-    writer->SetCompressorTypeToNone();
-    const int ok = writer->Write();
-    std::error_code ec;
-    if (!ok || errors->failed || writer->GetErrorCode() != 0) {
-        std::filesystem::remove(tmp, ec);
-        throw RunError("cannot write grid to " + path + ": " +
-                       (errors->first.empty() ? "VTK writer failed" : errors->first));
-    }
-    std::filesystem::rename(tmp, path, ec);
-    if (ec) {
-        std::filesystem::remove(tmp, ec);
-        throw RunError("cannot write grid to " + path + ": " + ec.message());
-    }
+    detail::writeXmlAtomically(writer, image, path, "grid");
 }
 
 GridVtkInfo readGridInfo(const std::string& path)
@@ -128,11 +73,11 @@ GridVtkInfo readGridInfo(const std::string& path)
     if (!std::filesystem::is_regular_file(path, ec))
         throw InputError(path, 0, "cannot read grid: no such file");
     vtkNew<vtkXMLImageDataReader> reader;
-    vtkNew<ErrorCollector> errors;
+    vtkNew<detail::ErrorCollector> errors;
     reader->AddObserver(vtkCommand::ErrorEvent, errors);
     reader->SetFileName(path.c_str());
     {
-        QuietVtk quiet;
+        detail::QuietVtk quiet;
         if (!reader->CanReadFile(path.c_str()))
             throw InputError(path, 0, "cannot read grid: not a VTK XML ImageData file");
         try {
