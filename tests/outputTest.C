@@ -64,3 +64,18 @@ TEST(Output, purgeWriteKeepsTheStartAndTheLastN)
     ASSERT_EQ(pvd.entries().size(), 3u);
     EXPECT_EQ(pvd.entries()[1].file, "0.3/particles.vtp");
 }
+
+TEST(Output, picListTimesRemovesAllButTheStartAndTrimsTheIndex)
+{
+    ScratchDir scratch("listtimes");
+    const fs::path dir = twoDisks(scratch);
+    runCase(dir);
+    const std::string app = std::string(GPIC_BINARY_DIR) + "/bin/picListTimes -case " + dir.string();
+    ASSERT_EQ(std::system((app + " > " + (scratch.path() / "list.txt").string()).c_str()), 0);
+    std::ifstream list(scratch.path() / "list.txt");
+    std::string names((std::istreambuf_iterator<char>(list)), std::istreambuf_iterator<char>());
+    EXPECT_EQ(names, "0\n0.1\n0.2\n0.3\n0.4\n");
+    ASSERT_EQ(std::system((app + " -rm > /dev/null").c_str()), 0);
+    EXPECT_EQ(gpic::listTimeDirectories(dir.string()).size(), 1u);
+    EXPECT_EQ(gpic::PvdCollection((dir / "twoDisks.pvd").string()).entries().size(), 1u);
+}
