@@ -33,7 +33,7 @@ void MUSL::advance(MpmSolver& s, double dt) const
     s.computeForces();
     s.updateGrid(dt);
     s.gridToParticles(dt);
-    s.remapVelocity();
+    s.remapVelocity(dt);
     s.updateStress(dt);
 }
 

@@ -1,5 +1,6 @@
 #include "solver/CaseFiles.H"
 
+#include <algorithm>
 #include <filesystem>
 
 namespace gpic {
@@ -32,6 +33,24 @@ std::array<std::unique_ptr<BoundaryCondition>, 4> readBoundaries(const Dictionar
                                                      static_cast<GridSide>(s));
     }
     return bcs;
+}
+
+std::vector<std::unique_ptr<RigidBodyDriver>> readRigidBodies(const Dictionary& dict,
+                                                              const std::vector<std::string>& bodyNames)
+{
+    std::vector<std::unique_ptr<RigidBodyDriver>> drivers(bodyNames.size());
+    for (const auto& key : dict.keys()) {
+        const auto it = std::find(bodyNames.begin(), bodyNames.end(), key);
+        if (it == bodyNames.end()) {
+            std::string valid;
+            for (const auto& b : bodyNames) valid += (valid.empty() ? "" : ", ") + b;
+            dict.fail(key, "'" + key + "' is not a body of the particles; valid choices: " + valid);
+        }
+        if (!dict.isDict(key)) dict.fail(key, "'" + key + "' needs a driver sub-dictionary { type ...; }");
+        drivers[static_cast<std::size_t>(it - bodyNames.begin())] = RigidBodyDriver::New(dict.subDict(key));
+    }
+    dict.warnUnused();
+    return drivers;
 }
 
 Vector2 readGravity(const std::string& caseDir)

@@ -30,6 +30,7 @@ MpmSolver::MpmSolver(Grid grid, Particles particles,
     }
     particles_.sortByMaterial();
     blocks_ = particles_.blocks();
+    materialDeforms_.assign(materials_.size(), 1);
     for (const auto& b : blocks_)
         if (b.material < 0 || b.material >= static_cast<int>(materials_.size()))
             throw RunError("particle material id " + std::to_string(b.material) +
@@ -64,6 +65,8 @@ void MpmSolver::computeWeights()
 void MpmSolver::particlesToGrid()
 {
     auto timer = timers_.time("particlesToGrid");
+    if (!rigid_.empty())
+        for (int n : grid_.active) rigidNodeBody_[n] = -1;
     grid_.resetFields();
     const Particles& p = particles_;
     const int stride = weights_.stride;
@@ -74,6 +77,7 @@ void MpmSolver::particlesToGrid()
             const double N = weights_.N[k0 + a];
             if (n < 0) continue;
             grid_.activate(n);  // also at N = 0: its gradient may still carry force
+            if (!rigid_.empty() && rigid_[p.body[q]] && N > 0.0) rigidNodeBody_[n] = p.body[q];
             grid_.mass[n] += N * p.m[q];             // lumped mass, row sums of eq. 2.3.7
             grid_.momentum[n] += (N * p.m[q]) * p.v[q];  // eq. 2.4.1
         }
@@ -83,7 +87,27 @@ void MpmSolver::particlesToGrid()
     for (int n : grid_.active)
         grid_.velocity[n] = grid_.mass[n] > 0.0 ? Vector2(grid_.momentum[n] / grid_.mass[n])
                                                          : Vector2::Zero();
+    if (!rigid_.empty()) constrainRigidNodes(time_);
     applyBoundaries(grid_.velocity);
+}
+
+void MpmSolver::setRigidBodies(std::vector<std::unique_ptr<RigidBodyDriver>> drivers)
+{
+    // Keep the table only when some body is rigid: otherwise no rigid pass runs at all.
+    const bool anyRigid = std::any_of(drivers.begin(), drivers.end(), [](const auto& d) { return d != nullptr; });
+    rigid_ = anyRigid ? std::move(drivers) : std::vector<std::unique_ptr<RigidBodyDriver>>{};
+    rigidNodeBody_.assign(anyRigid ? static_cast<std::size_t>(grid_.nNodes()) : 0, -1);
+    // A material used only by rigid bodies sets no wave speed: it never deforms.
+    materialDeforms_.assign(materials_.size(), anyRigid ? 0 : 1);
+    for (std::size_t q = 0; q < particles_.size(); ++q)
+        if (!driverOf(q)) materialDeforms_[particles_.material[q]] = 1;
+}
+
+void MpmSolver::constrainRigidNodes(double t)
+{
+    for (int n : grid_.active)
+        if (rigidNodeBody_[n] >= 0)
+            grid_.velocity[n] = rigid_[rigidNodeBody_[n]]->velocity(t, grid_.nodePosition(n));
 }
 
 void MpmSolver::computeForces()
@@ -92,7 +116,8 @@ void MpmSolver::computeForces()
     const Particles& p = particles_;
     const int stride = weights_.stride;
     for (std::size_t q = 0; q < p.size(); ++q) {
-        const SymTensor& s = p.sigma[q];
+        // A rigid body carries no stress: its nodes are driven instead.
+        const SymTensor s = driverOf(q) ? SymTensor::Zero() : p.sigma[q];
         const std::size_t k0 = q * stride;
         for (int a = 0; a < stride; ++a) {
             const int n = weights_.node[k0 + a];
@@ -124,6 +149,11 @@ void MpmSolver::updateGrid(double dt)
         grid_.accel[n] = grid_.mass[n] > minNodalMass_ ? Vector2(F / grid_.mass[n])
                                                        : Vector2::Zero();  // eq. 2.4.2
     }
+    if (!rigid_.empty())  // rigid nodes: the acceleration that brings them to the body's velocity
+        for (int n : grid_.active)
+            if (rigidNodeBody_[n] >= 0)
+                grid_.accel[n] = (rigid_[rigidNodeBody_[n]]->velocity(time_ + dt, grid_.nodePosition(n)) -
+                                  grid_.velocity[n]) / dt;
     applyBoundaries(grid_.accel);
     for (int n : grid_.active) grid_.velocity[n] += dt * grid_.accel[n];  // eq. 2.4.3
     applyBoundaries(grid_.velocity);
@@ -144,6 +174,7 @@ void MpmSolver::updateStress(double dt)
                 if (n < 0) continue;
                 L.noalias() += grid_.velocity[n] * weights_.dN[k0 + a].transpose();
             }
+            if (driverOf(q)) L.setZero();  // rigid: no strain, no spin, no volume change
             SymTensor& de = p.dEps[q];
             de[XX] = dt * L(0, 0);
             de[YY] = dt * L(1, 1);
@@ -179,6 +210,11 @@ void MpmSolver::gridToParticles(double dt)
             vNew += N * grid_.velocity[n];
             a += N * grid_.accel[n];
         }
+        if (const RigidBodyDriver* body = driverOf(q)) {
+            p.v[q] = body->velocity(time_ + dt, p.x[q]);
+            p.x[q] += dt * p.v[q];
+            continue;
+        }
         p.x[q] += dt * vNew;  // eq. 2.4.7
         p.v[q] += dt * a;     // eq. 2.4.8 (FLIP)
         finite = finite && std::isfinite(p.v[q].x() + p.v[q].y());
@@ -192,7 +228,7 @@ void MpmSolver::gridToParticles(double dt)
     }
 }
 
-void MpmSolver::remapVelocity()
+void MpmSolver::remapVelocity(double dt)
 {
     auto timer = timers_.time("particlesToGrid");
     const Particles& p = particles_;
@@ -208,6 +244,7 @@ void MpmSolver::remapVelocity()
     for (int n : grid_.active)
         grid_.velocity[n] = grid_.mass[n] > 0.0 ? Vector2(grid_.momentum[n] / grid_.mass[n])
                                                          : Vector2::Zero();
+    if (!rigid_.empty()) constrainRigidNodes(time_ + dt);
     applyBoundaries(grid_.velocity);
 }
 
@@ -220,9 +257,15 @@ double MpmSolver::maxParticleSpeed() const
 
 double MpmSolver::criticalTimeStep() const
 {
+    return grid_.minCellSize() / (maxWaveSpeed() + maxParticleSpeed());
+}
+
+double MpmSolver::maxWaveSpeed() const
+{
     double c = 0;
-    for (const auto& m : materials_) c = std::max(c, m->waveSpeed());
-    return grid_.minCellSize() / (c + maxParticleSpeed());
+    for (std::size_t m = 0; m < materials_.size(); ++m)
+        if (materialDeforms_[m]) c = std::max(c, materials_[m]->waveSpeed());
+    return c;
 }
 
 } // namespace gpic

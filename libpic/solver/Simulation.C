@@ -111,15 +111,16 @@ Simulation::Simulation(const RunOptions& options)
                                           std::move(shape), std::move(boundaries));
     solver_->setGravity(readGravity(dir));
     solver_->setDamping(damping);
+    solver_->setTime(time_);
+    if (fs::exists(fs::path(dir) / "constant/rigidBodies"))
+        solver_->setRigidBodies(readRigidBodies(readCaseFile(dir, "constant/rigidBodies"), bodyNames));
 
     context_ = RunContext{dir, startName, bodyNames, materialNames(solver_->materials())};
     if (const Dictionary* fns = controlDict_.subDictPtr("functions"))
         for (const auto& key : fns->keys()) functions_.push_back(FunctionObject::New(fns->subDict(key), context_));
 
     std::ostringstream why;
-    double c = 0;
-    for (const auto& m : solver_->materials()) c = std::max(c, m->waveSpeed());
-    why << "cell size " << solver_->grid().minCellSize() << " m / (wave speed " << c
+    why << "cell size " << solver_->grid().minCellSize() << " m / (wave speed " << solver_->maxWaveSpeed()
         << " m/s + particle speed " << solver_->maxParticleSpeed() << " m/s)";
     timeControl_->checkStable(solver_->criticalTimeStep(), why.str());
 
@@ -187,6 +188,7 @@ long Simulation::run()
     bool writtenLast = true;
     while (!timeControl_->finished(time_)) {
         try {
+            solver_->setTime(time_);
             deltaT_ = timeControl_->deltaT(time_, solver_->criticalTimeStep());
             scheme_->advance(*solver_, deltaT_);
         } catch (const RunError& e) {

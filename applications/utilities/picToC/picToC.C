@@ -1,6 +1,7 @@
 // picToC: lists every run-time selectable type by kind (like OpenFOAM's foamToC), after
 // loading any libraries given with -libs.
 #include "applicationMain.H"
+#include "bodies/RigidBodyDriver.H"
 #include "bodies/Shape.H"
 #include "boundaryConditions/BoundaryCondition.H"
 #include "contact/ContactLaw.H"
@@ -30,5 +31,6 @@ int main(int argc, char** argv)
                                      list<gpic::UpdateScheme>();
                                      list<gpic::FunctionObject>();
                                      list<gpic::Shape>();
+                                     list<gpic::RigidBodyDriver>();
                                  });
 }
