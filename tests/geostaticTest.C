@@ -52,14 +52,9 @@ ColumnResult runColumn(double E, double damping, double endTime, bool geostaticS
     ScratchDir scratch("column");
     const fs::path dir = scratch.path() / "column";
     writeColumnCase(dir, E, damping, endTime, geostaticStart, shape);
-    gpic::initialiseCase(dir.string());
-    gpic::RunOptions options;
-    options.caseDir = dir.string();
-    options.quiet = true;
-    gpic::Simulation simulation(options);
-    simulation.run();
-    const gpic::Particles& p = simulation.solver().particles();
-    ColumnResult r{0, simulation.solver().maxParticleSpeed()};
+    const auto simulation = runAndKeep(dir);
+    const gpic::Particles& p = simulation->solver().particles();
+    ColumnResult r{0, simulation->solver().maxParticleSpeed()};
     for (std::size_t q = 0; q < p.size(); ++q) {
         const double s22 = -rho * g * (H - p.x0[q].y());
         r.stressError = std::max({r.stressError, std::abs(p.sigma[q][gpic::YY] - s22),

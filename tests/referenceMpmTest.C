@@ -99,11 +99,8 @@ TEST(ReferenceMpm, engineMatchesTheReferenceThroughTheDiskImpact)
     setEntry(dir / "system/controlDict", "writeInterval", "10");
     setEntry(dir / "system/mpmSchemes", "updateScheme", "USL");
     setEntry(dir / "system/mpmSchemes", "shapeFunction", "bilinear");
-    gpic::initialiseCase(dir.string());
-    gpic::RunOptions options;
-    options.caseDir = dir.string();
-    options.quiet = true;
-    gpic::Simulation simulation(options);
+    const auto simulationPtr = initialisedSimulation(dir);
+    gpic::Simulation& simulation = *simulationPtr;
 
     // The reference starts from the same particles.
     const gpic::Particles& p0 = simulation.solver().particles();

@@ -42,13 +42,8 @@ TEST(RigidBody, aPistonCompressesABlockToTheUniaxialStrainStress)
 {
     ScratchDir scratch("piston");
     const fs::path dir = writePistonCase(scratch);
-    gpic::initialiseCase(dir.string());
-    gpic::RunOptions options;
-    options.caseDir = dir.string();
-    options.quiet = true;
-    gpic::Simulation simulation(options);
-    simulation.run();
-    const gpic::Particles& p = simulation.solver().particles();
+    const auto simulation = runAndKeep(dir);
+    const gpic::Particles& p = simulation->solver().particles();
 
     // delta = 0.02 m keeps the piston's particles in their first cell, so the block's
     // driven face stays the node line x = L.
@@ -80,12 +75,8 @@ TEST(RigidBody, anUnknownBodyInRigidBodiesListsTheBodies)
     ScratchDir scratch("pistonBad");
     const fs::path dir = writePistonCase(scratch);
     std::ofstream(dir / "constant/rigidBodies") << "pistn { type fixed; }\n";
-    gpic::initialiseCase(dir.string());
-    gpic::RunOptions options;
-    options.caseDir = dir.string();
-    options.quiet = true;
     try {
-        gpic::Simulation simulation(options);
+        initialisedSimulation(dir);
         FAIL() << "no error";
     } catch (const gpic::InputError& e) {
         const std::string what = e.what();
