@@ -63,6 +63,7 @@ void Grid::resetFields()
         fInt[n].setZero();
         fExt[n].setZero();
         accel[n].setZero();
+        if (!fContact.empty()) fContact[n].setZero();
         isActive_[n] = 0;
     }
     active.clear();

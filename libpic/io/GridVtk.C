@@ -56,6 +56,7 @@ void writeGrid(const std::string& path, const Grid& g, double time)
     pd->AddArray(nodalVectors("velocity", g.velocity));
     pd->AddArray(nodalVectors("internalForce", g.fInt));
     pd->AddArray(nodalVectors("externalForce", g.fExt));
+    if (!g.fContact.empty()) pd->AddArray(nodalVectors("contactForce", g.fContact));
 
     vtkNew<vtkDoubleArray> timeValue;
     timeValue->SetName("TimeValue");

@@ -53,6 +53,17 @@ std::vector<std::unique_ptr<RigidBodyDriver>> readRigidBodies(const Dictionary& 
     return drivers;
 }
 
+std::vector<std::unique_ptr<ParticleLoad>> readLoads(const Dictionary& dict)
+{
+    std::vector<std::unique_ptr<ParticleLoad>> loads;
+    for (const auto& key : dict.keys()) {
+        if (!dict.isDict(key)) dict.fail(key, "'" + key + "' needs a load sub-dictionary { type ...; }");
+        loads.push_back(ParticleLoad::New(dict.subDict(key)));
+    }
+    dict.warnUnused();
+    return loads;
+}
+
 Vector2 readGravity(const std::string& caseDir)
 {
     if (!std::filesystem::exists(std::filesystem::path(caseDir) / "constant/g"))

@@ -66,7 +66,11 @@ void MpmSolver::particlesToGrid()
 {
     auto timer = timers_.time("particlesToGrid");
     if (!rigid_.empty())
-        for (int n : grid_.active) rigidNodeBody_[n] = -1;
+        for (int n : grid_.active) {
+            rigidNodeBody_[n] = -1;
+            rigidMass_[n] = 0.0;
+            rigidMomentum_[n].setZero();
+        }
     grid_.resetFields();
     const Particles& p = particles_;
     const int stride = weights_.stride;
@@ -77,7 +81,11 @@ void MpmSolver::particlesToGrid()
             const double N = weights_.N[k0 + a];
             if (n < 0) continue;
             grid_.activate(n);  // also at N = 0: its gradient may still carry force
-            if (!rigid_.empty() && rigid_[p.body[q]] && N > 0.0) rigidNodeBody_[n] = p.body[q];
+            if (!rigid_.empty() && rigid_[p.body[q]]) {
+                if (N > 0.0) rigidNodeBody_[n] = p.body[q];
+                rigidMass_[n] += N * p.m[q];
+                rigidMomentum_[n] += (N * p.m[q]) * p.v[q];
+            }
             grid_.mass[n] += N * p.m[q];             // lumped mass, row sums of eq. 2.3.7
             grid_.momentum[n] += (N * p.m[q]) * p.v[q];  // eq. 2.4.1
         }
@@ -96,7 +104,30 @@ void MpmSolver::setRigidBodies(std::vector<std::unique_ptr<RigidBodyDriver>> dri
     // Keep the table only when some body is rigid: otherwise no rigid pass runs at all.
     const bool anyRigid = std::any_of(drivers.begin(), drivers.end(), [](const auto& d) { return d != nullptr; });
     rigid_ = anyRigid ? std::move(drivers) : std::vector<std::unique_ptr<RigidBodyDriver>>{};
-    rigidNodeBody_.assign(anyRigid ? static_cast<std::size_t>(grid_.nNodes()) : 0, -1);
+    const std::size_t nodes = anyRigid ? static_cast<std::size_t>(grid_.nNodes()) : 0;
+    rigidNodeBody_.assign(nodes, -1);
+    rigidMass_.assign(nodes, 0.0);
+    rigidMomentum_.assign(nodes, Vector2::Zero());
+    grid_.fContact.assign(nodes, Vector2::Zero());
+    rigidLoads_.assign(anyRigid ? rigid_.size() : 0, RigidBodyLoad{});
+    if (anyRigid) {
+        // Mass properties per body (particle domains as rectangles for the inertia).
+        std::vector<RigidBodyInfo> info(rigid_.size());
+        for (std::size_t q = 0; q < particles_.size(); ++q) {
+            auto& b = info[particles_.body[q]];
+            b.mass += particles_.m[q];
+            b.centroid += particles_.m[q] * particles_.x[q];
+        }
+        for (auto& b : info)
+            if (b.mass > 0) b.centroid /= b.mass;
+        for (std::size_t q = 0; q < particles_.size(); ++q) {
+            auto& b = info[particles_.body[q]];
+            const Vector2& a = particles_.halfSize[q];
+            b.inertia += particles_.m[q] * ((particles_.x[q] - b.centroid).squaredNorm() + a.squaredNorm() / 3.0);
+        }
+        for (std::size_t b = 0; b < rigid_.size(); ++b)
+            if (rigid_[b]) rigid_[b]->attach(info[b]);
+    }
     // A material used only by rigid bodies sets no wave speed: it never deforms.
     materialDeforms_.assign(materials_.size(), anyRigid ? 0 : 1);
     for (std::size_t q = 0; q < particles_.size(); ++q)
@@ -110,11 +141,23 @@ void MpmSolver::constrainRigidNodes(double t)
             grid_.velocity[n] = rigid_[rigidNodeBody_[n]]->velocity(t, grid_.nodePosition(n));
 }
 
+void MpmSolver::setLoads(std::vector<std::unique_ptr<ParticleLoad>> loads,
+                         const std::vector<std::string>& bodyNames)
+{
+    loads_ = std::move(loads);
+    for (auto& load : loads_) load->initialise(particles_, grid_, bodyNames);
+    particleForce_.assign(loads_.empty() ? 0 : particles_.size(), Vector2::Zero());
+}
+
 void MpmSolver::computeForces()
 {
     auto timer = timers_.time("forces");
     const Particles& p = particles_;
     const int stride = weights_.stride;
+    if (!loads_.empty()) {
+        std::fill(particleForce_.begin(), particleForce_.end(), Vector2::Zero());
+        for (const auto& load : loads_) load->addForces(time_, p, particleForce_);
+    }
     for (std::size_t q = 0; q < p.size(); ++q) {
         // A rigid body carries no stress: its nodes are driven instead.
         const SymTensor s = driverOf(q) ? SymTensor::Zero() : p.sigma[q];
@@ -127,6 +170,7 @@ void MpmSolver::computeForces()
             grid_.fInt[n] -= p.V[q] * Vector2(s[XX] * dN.x() + s[XY] * dN.y(),
                                               s[XY] * dN.x() + s[YY] * dN.y());
             grid_.fExt[n] += (weights_.N[k0 + a] * p.m[q]) * gravity_;  // eq. 2.3.9
+            if (!loads_.empty()) grid_.fExt[n] += weights_.N[k0 + a] * particleForce_[q];  // traction term
         }
     }
 }
@@ -149,11 +193,20 @@ void MpmSolver::updateGrid(double dt)
         grid_.accel[n] = grid_.mass[n] > minNodalMass_ ? Vector2(F / grid_.mass[n])
                                                        : Vector2::Zero();  // eq. 2.4.2
     }
-    if (!rigid_.empty())  // rigid nodes: the acceleration that brings them to the body's velocity
-        for (int n : grid_.active)
-            if (rigidNodeBody_[n] >= 0)
-                grid_.accel[n] = (rigid_[rigidNodeBody_[n]]->velocity(time_ + dt, grid_.nodePosition(n)) -
-                                  grid_.velocity[n]) / dt;
+    if (!rigid_.empty()) {  // rigid nodes: the acceleration that brings them to the body's velocity
+        for (auto& load : rigidLoads_) load = RigidBodyLoad{};
+        for (int n : grid_.active) {
+            const int b = rigidNodeBody_[n];
+            if (b < 0) continue;
+            const Vector2 x = grid_.nodePosition(n);
+            const Vector2 vNew = rigid_[b]->velocity(time_ + dt, x);
+            const Vector2 f = materialForceOnRigidNode(n, vNew, dt);
+            grid_.fContact[n] = f;
+            rigidLoads_[b].force += f;
+            rigidLoads_[b].moment += x.x() * f.y() - x.y() * f.x();
+            grid_.accel[n] = (vNew - grid_.velocity[n]) / dt;
+        }
+    }
     applyBoundaries(grid_.accel);
     for (int n : grid_.active) grid_.velocity[n] += dt * grid_.accel[n];  // eq. 2.4.3
     applyBoundaries(grid_.velocity);
@@ -226,6 +279,21 @@ void MpmSolver::gridToParticles(double dt)
                                materials_[p.material[q]]->name() +
                                ") has a non-finite velocity: the step is unstable");
     }
+}
+
+Vector2 MpmSolver::materialForceOnRigidNode(int n, const Vector2& vNew, double dt) const
+{
+    const double materialMass = grid_.mass[n] - rigidMass_[n];
+    const Vector2 materialMomentum = grid_.momentum[n] - rigidMomentum_[n];
+    // Rigid particles carry no stress: their only nodal force is their weight.
+    const Vector2 materialForce = grid_.fInt[n] + grid_.fExt[n] - rigidMass_[n] * gravity_;
+    return materialForce - (materialMass * vNew - materialMomentum) / dt;
+}
+
+void MpmSolver::advanceRigidBodies(double dt)
+{
+    for (std::size_t b = 0; b < rigid_.size(); ++b)
+        if (rigid_[b]) rigid_[b]->advance(time_, dt, rigidLoads_[b]);
 }
 
 void MpmSolver::remapVelocity(double dt)

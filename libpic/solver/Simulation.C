@@ -114,6 +114,8 @@ Simulation::Simulation(const RunOptions& options)
     solver_->setTime(time_);
     if (fs::exists(fs::path(dir) / "constant/rigidBodies"))
         solver_->setRigidBodies(readRigidBodies(readCaseFile(dir, "constant/rigidBodies"), bodyNames));
+    if (fs::exists(fs::path(dir) / "constant/loads"))
+        solver_->setLoads(readLoads(readCaseFile(dir, "constant/loads")), bodyNames);
 
     context_ = RunContext{dir, startName, bodyNames, materialNames(solver_->materials())};
     if (const Dictionary* fns = controlDict_.subDictPtr("functions"))
@@ -191,6 +193,7 @@ long Simulation::run()
             solver_->setTime(time_);
             deltaT_ = timeControl_->deltaT(time_, solver_->criticalTimeStep());
             scheme_->advance(*solver_, deltaT_);
+            solver_->advanceRigidBodies(deltaT_);
         } catch (const RunError& e) {
             throw RunError(std::string(e.what()) + " (step " + std::to_string(step_ + 1) +
                            " from t = " + exact(time_) + " s)");
