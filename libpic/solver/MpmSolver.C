@@ -117,9 +117,13 @@ void MpmSolver::setRigidBodies(std::vector<std::unique_ptr<RigidBodyDriver>> dri
             auto& b = info[particles_.body[q]];
             b.mass += particles_.m[q];
             b.centroid += particles_.m[q] * particles_.x[q];
+            b.velocity += particles_.m[q] * particles_.v[q];
         }
-        for (auto& b : info)
+        for (auto& b : info) {
             if (b.mass > 0) b.centroid /= b.mass;
+            if (b.mass > 0) b.velocity /= b.mass;
+            b.gravity = gravity_;
+        }
         for (std::size_t q = 0; q < particles_.size(); ++q) {
             auto& b = info[particles_.body[q]];
             const Vector2& a = particles_.halfSize[q];
