@@ -1,0 +1,57 @@
+#include "plasticity/PrincipalStresses.H"
+
+#include <utility>
+#include <cmath>
+
+namespace gpic {
+
+PrincipalStresses::PrincipalStresses(const SymTensor& s)
+{
+    const double centre = 0.5 * (s[XX] + s[YY]);
+    const double half = 0.5 * (s[XX] - s[YY]);
+    double major, minor;
+    if (s[XY] == 0.0) {
+        // Already principal: keep the coordinate axes exactly.
+        const bool xMajor = s[XX] >= s[YY];
+        c_ = xMajor ? 1.0 : 0.0;
+        s_ = xMajor ? 0.0 : 1.0;
+        major = xMajor ? s[XX] : s[YY];
+        minor = xMajor ? s[YY] : s[XX];
+    } else {
+        // Major-axis eigenvector of the in-plane 2x2 block, in whichever of its two forms
+        // has no cancellation: (half + R, s12) when s11 >= s22, else (s12, R - half).
+        // (sqrt rather than std::hypot: stresses are far from overflow, and hypot is slow.)
+        const double radius = std::sqrt(half * half + s[XY] * s[XY]);  // Mohr circle radius
+        const double vx = half >= 0 ? half + radius : s[XY];
+        const double vy = half >= 0 ? s[XY] : radius - half;
+        const double length = std::sqrt(vx * vx + vy * vy);
+        c_ = vx / length;
+        s_ = vy / length;
+        major = centre + radius;
+        minor = centre - radius;
+    }
+    // Sort three values (a stable exchange sort: equal values keep the axis order).
+    sigma_ << major, minor, s[ZZ];
+    axis_ = {majorInPlane, minorInPlane, outOfPlane};
+    const auto order = [this](int i, int j) {
+        if (sigma_[j] < sigma_[i]) {
+            std::swap(sigma_[i], sigma_[j]);
+            std::swap(axis_[i], axis_[j]);
+        }
+    };
+    order(0, 1);
+    order(1, 2);
+    order(0, 1);
+}
+
+SymTensor PrincipalStresses::tensor(const Eigen::Vector3d& sorted) const
+{
+    std::array<double, 3> onAxis{};
+    for (int i = 0; i < 3; ++i) onAxis[axis_[i]] = sorted[i];
+    const double a = onAxis[majorInPlane], b = onAxis[minorInPlane];
+    // Rotation back by -theta, eq. H.5.34.
+    return SymTensor(a * c_ * c_ + b * s_ * s_, a * s_ * s_ + b * c_ * c_, onAxis[outOfPlane],
+                     (a - b) * s_ * c_);
+}
+
+} // namespace gpic
