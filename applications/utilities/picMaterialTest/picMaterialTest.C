@@ -1,0 +1,216 @@
+// picMaterialTest: runs one material point along prescribed strain (or mixed strain and
+// stress) paths, to calibrate and check a material without a simulation. It calls the
+// material's updateStress on a single particle exactly as picSolver does, so every model,
+// plugins from `libs` included, behaves as in a run. Reads system/materialTestDict:
+//
+//     material      sand;              // from constant/materials, or { type ...; rho ...; }
+//     initialStress (0 0 0 0);         // sigma11 sigma22 sigma33 sigma12 [Pa], tension positive
+//     tests
+//     {
+//         oedometer { path oedometer; strain -0.03; steps 3000; }
+//         biaxial   { path biaxial; strain -0.05; confining 100e3; steps 5000; }
+//     }
+//
+// A test may override material, initialStress, deltaT, tolerance and maxIterations; see
+// LoadPath.H for the paths and doc/picMaterialTest.md for the whole dictionary. Each test
+// writes postProcessing/picMaterialTest/<test>.csv and <test>.png.
+#include "applicationMain.H"
+
+#include "LoadPath.H"
+#include "MaterialPoint.H"
+#include "PathPlot.H"
+#include "PointHistoryFile.H"
+#include "StepSolver.H"
+
+#include "solver/CaseFiles.H"
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <functional>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <optional>
+#include <sstream>
+
+namespace {
+
+using namespace gpic;
+namespace fs = std::filesystem;
+
+//- One test, read and checked before any runs.
+struct TestSetup {
+    std::string name;
+    std::shared_ptr<const Material> material;
+    LoadPath path;
+    SymTensor startStress;
+    double deltaT;
+    double tolerance;
+    int maxIterations;
+};
+
+//- The dictionary that holds `key` for this test: the test's own entry overrides the top level.
+const Dictionary& holder(const Dictionary& test, const Dictionary& top, const std::string& key)
+{
+    return test.found(key) ? test : top;
+}
+
+//- The materials named so far, built once each, and constant/materials once it is read.
+struct MaterialLibrary {
+    std::optional<Dictionary> file;
+    std::map<std::string, std::shared_ptr<const Material>> byName;
+};
+
+std::shared_ptr<const Material> selectMaterial(const Dictionary& dict, const std::string& caseDir,
+                                               MaterialLibrary& library)
+{
+    if (!dict.found("material"))
+        dict.fail("material", "keyword 'material' is undefined in dictionary " + dict.name() +
+                                  "; give a name from constant/materials or { type ...; }");
+    if (dict.isDict("material")) return Material::New(dict.subDict("material"));
+    const std::string name = dict.get<std::string>("material");
+    if (library.byName.count(name)) return library.byName[name];
+    if (!library.file) library.file = readCaseFile(caseDir, "constant/materials");
+    const Dictionary& materials = *library.file;
+    if (!materials.isDict(name)) {
+        std::string valid;
+        for (const auto& key : materials.keys())
+            if (materials.isDict(key)) valid += (valid.empty() ? "" : ", ") + key;
+        dict.fail("material", "material '" + name + "' is not in constant/materials; valid choices: " +
+                                  valid);
+    }
+    std::shared_ptr<const Material> material = Material::New(materials.subDict(name));
+    materials.subDict(name).warnUnused();
+    return library.byName[name] = material;
+}
+
+template <class T>
+T optionalChecked(const Dictionary& dict, const std::string& key, const T& deflt,
+                  const std::function<bool(const T&)>& valid, const std::string& requirement)
+{
+    return dict.found(key) ? dict.getChecked<T>(key, valid, requirement) : deflt;
+}
+
+SymTensor readStress(const Dictionary& dict, const std::string& key)
+{
+    const auto v = dict.get<std::vector<double>>(key);
+    bool finite = v.size() == 4;
+    for (double x : v) finite = finite && std::isfinite(x);
+    if (!finite)
+        dict.fail(key, key + " needs four finite values (sigma11 sigma22 sigma33 sigma12) in Pa, "
+                             "tension positive");
+    return SymTensor(v[0], v[1], v[2], v[3]);
+}
+
+TestSetup readTest(const std::string& name, const Dictionary& test, const Dictionary& top,
+                   const std::string& caseDir, MaterialLibrary& library)
+{
+    auto material = selectMaterial(holder(test, top, "material"), caseDir, library);
+    LoadPath path(test);
+    const Dictionary& stressHolder = holder(test, top, "initialStress");
+    const SymTensor start = stressHolder.found("initialStress") ? readStress(stressHolder, "initialStress")
+                                                                : path.defaultStartStress();
+    const double deltaT = optionalChecked<double>(
+        holder(test, top, "deltaT"), "deltaT", 1.0, [](const double& v) { return v > 0 && std::isfinite(v); },
+        "deltaT > 0 (s; seen by rate-dependent models only)");
+    const double tolerance = optionalChecked<double>(
+        holder(test, top, "tolerance"), "tolerance", 1e-10,
+        [](const double& v) { return v > 0 && v <= 1e-3; }, "0 < tolerance <= 1e-3 (relative stress error)");
+    const int maxIterations = optionalChecked<int>(holder(test, top, "maxIterations"), "maxIterations", 50,
+                                                   [](const int& v) { return v >= 1; }, "maxIterations >= 1");
+    return {name, std::move(material), std::move(path), start, deltaT, tolerance, maxIterations};
+}
+
+std::string tensorText(const SymTensor& s)
+{
+    std::ostringstream out;
+    out.precision(6);
+    out << '(' << s[XX] << ' ' << s[YY] << ' ' << s[ZZ] << ' ' << s[XY] << ')';
+    return out.str();
+}
+
+void runTest(const TestSetup& setup, const fs::path& outputDir)
+{
+    const std::string csvPath = (outputDir / (setup.name + ".csv")).string();
+    const std::string pngPath = (outputDir / (setup.name + ".png")).string();
+    const auto start = std::chrono::steady_clock::now();
+
+    MaterialPoint point(*setup.material, setup.startStress);
+    StepSolver solver(setup.tolerance, setup.maxIterations);
+    PointHistoryFile csv(csvPath, point);
+    csv.write(0, point);
+    int mostIterations = 0;
+    for (int n = 1; n <= setup.path.steps(); ++n) {
+        const std::string where = "test '" + setup.name + "', step " + std::to_string(n) + ": ";
+        try {
+            mostIterations = std::max(
+                mostIterations, solver.advance(point, setup.path.step(n, setup.startStress), setup.deltaT));
+        } catch (const RunError& e) {
+            throw RunError(where + e.what());
+        }
+        if (!point.sigma().allFinite())
+            throw RunError(where + "material '" + setup.material->name() + "' returned a non-finite stress " +
+                           tensorText(point.sigma()));
+        csv.write(n, point);
+    }
+    csv.close();
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+    std::ostringstream line;
+    line.precision(6);
+    line << setup.name << " (" << setup.material->name() << ", " << setup.path.type() << ", "
+         << setup.path.steps() << " steps): sigma = " << tensorText(point.sigma()) << " Pa, p = " << point.p()
+         << " Pa, q = " << point.q() << " Pa";
+    if (setup.path.hasStressControl()) line << ", at most " << mostIterations << " iterations a step";
+    line.precision(3);
+    line << ", wall " << wall << " s";
+    std::cout << line.str() << '\n';
+
+    const std::string title = "picMaterialTest: " + setup.name + " (material " + setup.material->name() +
+                              ", " + setup.path.type() + " path, " + std::to_string(setup.path.steps()) +
+                              " steps)";
+    const bool plotted = plotPath(csvPath, pngPath, title, setup.path.naturalAxes(), setup.path.steps());
+    std::cout << "    wrote " << csvPath << (plotted ? ", " + pngPath : std::string()) << '\n';
+}
+
+void run(const std::string& caseDir, const std::string& dictPath)
+{
+    const Dictionary dict = readCaseFile(caseDir, dictPath);
+    Plugins::open(dict, "libs");
+    const Dictionary& tests = dict.subDict("tests");
+    MaterialLibrary library;
+    std::vector<TestSetup> setups;
+    for (const auto& name : tests.keys()) {
+        if (!tests.isDict(name))
+            tests.fail(name, "'" + name + "' is not a test sub-dictionary { path " +
+                                 "oedometer|biaxial|simpleShear|rotation|general; ... }");
+        setups.push_back(readTest(name, tests.subDict(name), dict, caseDir, library));
+    }
+    if (setups.empty()) tests.fail("", "no test is defined in " + tests.name());
+    dict.warnUnused();
+
+    const fs::path outputDir = fs::path(caseDir) / "postProcessing" / "picMaterialTest";
+    std::error_code ec;
+    fs::create_directories(outputDir, ec);
+    if (ec) throw RunError("cannot create " + outputDir.string() + ": " + ec.message());
+    std::cout << "picMaterialTest: " << setups.size() << " test(s) from " << dictPath << '\n';
+    for (const auto& setup : setups) runTest(setup, outputDir);
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    namespace po = boost::program_options;
+    po::options_description options("picMaterialTest options");
+    options.add_options()("dict", po::value<std::string>()->default_value("system/materialTestDict"),
+                          "test dictionary, relative to the case");
+    return gpic::applicationMain(
+        argc, argv,
+        "picMaterialTest: drive one material point along strain paths (oedometer, biaxial, simple "
+        "shear, rotation, general) and write its stress history",
+        options, [](const po::variables_map& vm) {
+            run(vm["case"].as<std::string>(), vm["dict"].as<std::string>());
+        });
+}
