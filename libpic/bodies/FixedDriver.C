@@ -1,0 +1,7 @@
+#include "bodies/FixedDriver.H"
+
+namespace gpic {
+
+GPIC_REGISTER(RigidBodyDriver, FixedDriver, "fixed")
+
+} // namespace gpic

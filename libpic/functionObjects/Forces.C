@@ -1,0 +1,83 @@
+#include "functionObjects/Forces.H"
+
+#include "core/error.H"
+#include "dictionary/Dictionary.H"
+
+#include <algorithm>
+
+namespace gpic {
+
+GPIC_REGISTER(FunctionObject, Forces, "forces")
+
+namespace {
+std::string joined(const std::vector<std::string>& names)
+{
+    std::string list;
+    for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
+    return list.empty() ? "(none)" : list;
+}
+} // namespace
+
+Forces::Forces(const Dictionary& dict, const RunContext& context)
+    : FunctionObject(dict, context),
+      names_(dict.getOrDefault<std::vector<std::string>>("bodies", {})),
+      CofR_(dict.getOrDefault<Vector2>("CofR", Vector2::Zero())),
+      file_(dict.fileName()),
+      line_(dict.lineOf(dict.found("bodies") ? "bodies" : "type"))
+{
+    for (const auto& n : names_)
+        if (std::find(context.bodyNames.begin(), context.bodyNames.end(), n) == context.bodyNames.end())
+            dict.fail("bodies", "forces " + name() + ": '" + n + "' is not a body; valid choices: " +
+                                    joined(context.bodyNames));
+}
+
+void Forces::start(const MpmSolver& solver, double)
+{
+    const auto& all = context().bodyNames;
+    std::vector<std::string> rigid;
+    for (std::size_t b = 0; b < all.size(); ++b)
+        if (solver.rigidBody(static_cast<int>(b))) rigid.push_back(all[b]);
+    if (rigid.empty())
+        throw InputError(file_, line_, "forces " + name() + ": the case has no rigid body (constant/rigidBodies)");
+    bodies_.clear();
+    for (const auto& n : names_.empty() ? rigid : names_) {
+        if (std::find(rigid.begin(), rigid.end(), n) == rigid.end())
+            throw InputError(file_, line_, "forces " + name() + ": '" + n +
+                                               "' is not a rigid body (constant/rigidBodies); valid choices: " +
+                                               joined(rigid));
+        bodies_.push_back(static_cast<int>(std::find(all.begin(), all.end(), n) - all.begin()));
+    }
+    std::ofstream& os = file("forces.dat");
+    os << "# force of the material on each body [N/m], its moment about CofR (" << CofR_.x() << ' '
+       << CofR_.y() << ") [N m/m] and the body's mean displacement [m]\n# time";
+    for (int b : bodies_)
+        for (const char* c : {"Fx", "Fy", "Mz", "dx", "dy"}) os << ' ' << all[b] << ':' << c;
+    os << std::endl;
+}
+
+void Forces::write(const MpmSolver& solver, double time)
+{
+    const Particles& p = solver.particles();
+    const std::size_t nBodies = context().bodyNames.size();
+    std::vector<double> mass(nBodies, 0.0);
+    std::vector<Vector2> moved(nBodies, Vector2::Zero());
+    for (std::size_t q = 0; q < p.size(); ++q) {
+        const auto b = static_cast<std::size_t>(p.body[q]);
+        if (b >= nBodies) continue;
+        mass[b] += p.m[q];
+        moved[b] += p.m[q] * (p.x[q] - p.x0[q]);
+    }
+    const auto& loads = solver.rigidBodyLoads();
+    std::ofstream& os = file("forces.dat");
+    os << time;
+    for (int b : bodies_) {
+        const auto k = static_cast<std::size_t>(b);
+        const RigidBodyLoad load = k < loads.size() ? loads[k] : RigidBodyLoad{};
+        const Vector2 d = mass[k] > 0.0 ? Vector2(moved[k] / mass[k]) : Vector2::Zero();
+        os << ' ' << load.force.x() << ' ' << load.force.y() << ' ' << load.momentAbout(CofR_) << ' '
+           << d.x() << ' ' << d.y();
+    }
+    os << std::endl;  // readable while the run goes on
+}
+
+} // namespace gpic
