@@ -1,5 +1,6 @@
 """Reading granular-pic output for tutorial scripts (standard library only)."""
 import re
+import struct
 
 
 def read_columns(path):
@@ -24,3 +25,29 @@ def run_summary(log_path):
             if m:
                 return int(m.group(2)), int(m.group(1)), float(m.group(3))
     raise RuntimeError('no End: line in ' + log_path + ' (did the run fail?)')
+
+
+def read_particles(path):
+    """Point arrays of a particles.vtp (raw appended binary, UInt64 headers), by name.
+
+    Each array is a list of tuples (one per particle) or of numbers for one component;
+    positions are under 'Points'. Tensors have 9 components, row-major (xx xy xz yx yy ...).
+    """
+    with open(path, 'rb') as f:
+        data = f.read()
+    start = data.index(b'<AppendedData')
+    start = data.index(b'_', start) + 1
+    header = data[:start].decode('ascii', 'replace')
+    piece = header[header.index('<Piece'):header.index('</Points>')]
+    codes = {'Float64': 'd', 'Float32': 'f', 'Int32': 'i', 'Int64': 'q', 'UInt8': 'B'}
+    arrays = {}
+    for tag in re.findall(r'<DataArray[^>]*>', piece):
+        attr = dict(re.findall(r'(\w+)="([^"]*)"', tag))
+        code = codes[attr['type']]
+        at = start + int(attr['offset'])
+        nbytes = struct.unpack_from('<Q', data, at)[0]
+        values = struct.unpack_from('<%d%s' % (nbytes // struct.calcsize(code), code), data, at + 8)
+        n = int(attr.get('NumberOfComponents', '1'))
+        arrays[attr['Name']] = list(values) if n == 1 else \
+            [values[k:k + n] for k in range(0, len(values), n)]
+    return arrays

@@ -6,6 +6,7 @@
 #include "boundaryConditions/BoundaryCondition.H"
 #include "contact/ContactLaw.H"
 #include "functionObjects/FunctionObject.H"
+#include "loads/ParticleLoad.H"
 #include "materials/Material.H"
 #include "schemes/UpdateScheme.H"
 #include "shapeFunctions/ShapeFunction.H"
@@ -32,5 +33,6 @@ int main(int argc, char** argv)
                                      list<gpic::FunctionObject>();
                                      list<gpic::Shape>();
                                      list<gpic::RigidBodyDriver>();
+                                     list<gpic::ParticleLoad>();
                                  });
 }
