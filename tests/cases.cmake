@@ -14,7 +14,13 @@ set_tests_properties(pluginExample PROPERTIES
 
 # Each tutorial's Allrun must print its error-against-run-time table and write its plots.
 foreach(tutorial "verification/elasticBar;bar.png;error.png"
-                 "verification/twoDisks;energy.png;error.png")
+                 "verification/twoDisks;energy.png;error.png"
+                 "contact/inclinedDisk;displacement.png;error.png"
+                 "contact/frictionalDisks;energy.png;error.png"
+                 "verification/impact;depth.png;error.png"
+                 "verification/elasticFooting;stress.png;error.png"
+                 "verification/plungerOedometer;force.png;stressPath.png;error.png"
+                 "materials/oedometerPoint;oedometer.png")
   list(GET tutorial 0 path)
   list(SUBLIST tutorial 1 -1 plots)
   string(REPLACE "/" "_" name "tutorial_${path}")

@@ -65,23 +65,31 @@ void MpmSolver::computeWeights()
 void MpmSolver::particlesToGrid()
 {
     auto timer = timers_.time("particlesToGrid");
-    if (!rigid_.empty())
+    const bool driven = drivesRigidNodes();
+    if (driven)
         for (int n : grid_.active) {
             rigidNodeBody_[n] = -1;
             rigidMass_[n] = 0.0;
             rigidMomentum_[n].setZero();
         }
+    if (contact_) contact_->reset(grid_.active);
     grid_.resetFields();
     const Particles& p = particles_;
     const int stride = weights_.stride;
     for (std::size_t q = 0; q < p.size(); ++q) {
         const std::size_t k0 = q * stride;
+        BodyField* body = contact_ ? &contact_->field(p.body[q]) : nullptr;
         for (int a = 0; a < stride; ++a) {
             const int n = weights_.node[k0 + a];
             const double N = weights_.N[k0 + a];
             if (n < 0) continue;
             grid_.activate(n);  // also at N = 0: its gradient may still carry force
-            if (!rigid_.empty() && rigid_[p.body[q]]) {
+            if (body) {  // the body's own field, from its particles only (seed G.4 step 1)
+                body->mass[n] += N * p.m[q];
+                body->momentum[n] += (N * p.m[q]) * p.v[q];
+                continue;
+            }
+            if (driven && rigid_[p.body[q]]) {
                 if (N > 0.0) rigidNodeBody_[n] = p.body[q];
                 rigidMass_[n] += N * p.m[q];
                 rigidMomentum_[n] += (N * p.m[q]) * p.v[q];
@@ -90,13 +98,56 @@ void MpmSolver::particlesToGrid()
             grid_.momentum[n] += (N * p.m[q]) * p.v[q];  // eq. 2.4.1
         }
     }
+    if (contact_)  // the system (centre-of-mass) field is the sum of the bodies' (F.8.6)
+        for (int b = 0; b < contact_->nBodies(); ++b) {
+            const BodyField& f = contact_->field(b);
+            for (int n : grid_.active) {
+                grid_.mass[n] += f.mass[n];
+                grid_.momentum[n] += f.momentum[n];
+            }
+        }
     // No small-mass cut-off: p_i/m_i is a weighted mean of particle velocities, exact for
     // any m_i > 0; zeroing light nodes would put spurious strain into a rigid translation.
     for (int n : grid_.active)
         grid_.velocity[n] = grid_.mass[n] > 0.0 ? Vector2(grid_.momentum[n] / grid_.mass[n])
                                                          : Vector2::Zero();
-    if (!rigid_.empty()) constrainRigidNodes(time_);
+    if (driven) constrainRigidNodes(time_);
     applyBoundaries(grid_.velocity);
+    if (contact_) bodyVelocities(time_);
+}
+
+void MpmSolver::bodyVelocities(double t)
+{
+    for (int b = 0; b < contact_->nBodies(); ++b) {
+        BodyField& f = contact_->field(b);
+        const RigidBodyDriver* driver = rigid_.empty() ? nullptr : rigid_[b].get();
+        for (int n : grid_.active) {
+            if (!(f.mass[n] > 0.0)) continue;
+            f.velocity[n] = driver ? driver->velocity(t, grid_.nodePosition(n))
+                                   : Vector2(f.momentum[n] / f.mass[n]);
+        }
+        if (!driver) applyBoundaries(f.velocity);
+    }
+}
+
+void MpmSolver::setContact(std::unique_ptr<ContactLaw> law, ContactNormals normals,
+                           std::vector<std::unique_ptr<RigidSurface>> surfaces, int nBodies)
+{
+    // One field serves one body, and noSlip: then no per-body array and no contact pass exist.
+    if (!law || !law->needsBodyFields() || nBodies < 2) return;
+    contact_ = std::make_unique<MultiFieldContact>(std::move(law), normals, std::move(surfaces), nBodies, grid_);
+    allocateExchange();
+}
+
+void MpmSolver::allocateExchange()
+{
+    const auto nodes = static_cast<std::size_t>(grid_.nNodes());
+    const std::size_t driven = drivesRigidNodes() ? nodes : 0;
+    std::vector<int>(driven, -1).swap(rigidNodeBody_);
+    std::vector<double>(driven, 0.0).swap(rigidMass_);
+    std::vector<Vector2>(driven, Vector2::Zero()).swap(rigidMomentum_);
+    grid_.fContact.assign(!rigid_.empty() || contact_ ? nodes : 0, Vector2::Zero());
+    rigidLoads_.assign(contact_ ? static_cast<std::size_t>(contact_->nBodies()) : rigid_.size(), RigidBodyLoad{});
 }
 
 void MpmSolver::setRigidBodies(std::vector<std::unique_ptr<RigidBodyDriver>> drivers)
@@ -104,12 +155,7 @@ void MpmSolver::setRigidBodies(std::vector<std::unique_ptr<RigidBodyDriver>> dri
     // Keep the table only when some body is rigid: otherwise no rigid pass runs at all.
     const bool anyRigid = std::any_of(drivers.begin(), drivers.end(), [](const auto& d) { return d != nullptr; });
     rigid_ = anyRigid ? std::move(drivers) : std::vector<std::unique_ptr<RigidBodyDriver>>{};
-    const std::size_t nodes = anyRigid ? static_cast<std::size_t>(grid_.nNodes()) : 0;
-    rigidNodeBody_.assign(nodes, -1);
-    rigidMass_.assign(nodes, 0.0);
-    rigidMomentum_.assign(nodes, Vector2::Zero());
-    grid_.fContact.assign(nodes, Vector2::Zero());
-    rigidLoads_.assign(anyRigid ? rigid_.size() : 0, RigidBodyLoad{});
+    allocateExchange();
     if (anyRigid) {
         // Mass properties per body (particle domains as rectangles for the inertia).
         std::vector<RigidBodyInfo> info(rigid_.size());
@@ -166,10 +212,20 @@ void MpmSolver::computeForces()
         // A rigid body carries no stress: its nodes are driven instead.
         const SymTensor s = driverOf(q) ? SymTensor::Zero() : p.sigma[q];
         const std::size_t k0 = q * stride;
+        BodyField* body = contact_ ? &contact_->field(p.body[q]) : nullptr;
         for (int a = 0; a < stride; ++a) {
             const int n = weights_.node[k0 + a];
             if (n < 0) continue;
             const Vector2& dN = weights_.dN[k0 + a];
+            if (body) {  // the same terms on the body's own field, summed into the system's
+                const Vector2 fInt = -p.V[q] * Vector2(s[XX] * dN.x() + s[XY] * dN.y(), s[XY] * dN.x() + s[YY] * dN.y());
+                Vector2 fExt = (weights_.N[k0 + a] * p.m[q]) * gravity_;
+                if (!loads_.empty()) fExt += weights_.N[k0 + a] * particleForce_[q];
+                grid_.fInt[n] += fInt;
+                grid_.fExt[n] += fExt;
+                body->force[n] += fInt + fExt;
+                continue;
+            }
             // eq. 2.3.8: F_int = -sum_p V_p B_p^T sigma_p
             grid_.fInt[n] -= p.V[q] * Vector2(s[XX] * dN.x() + s[XY] * dN.y(),
                                               s[XY] * dN.x() + s[YY] * dN.y());
@@ -181,6 +237,10 @@ void MpmSolver::computeForces()
 
 void MpmSolver::updateGrid(double dt)
 {
+    if (contact_) {
+        updateBodyFields(dt);
+        return;
+    }
     auto timer = timers_.time("gridUpdate");
     for (int n : grid_.active) {
         Vector2 F = grid_.fInt[n] + grid_.fExt[n];
@@ -208,12 +268,77 @@ void MpmSolver::updateGrid(double dt)
             grid_.fContact[n] = f;
             rigidLoads_[b].force += f;
             rigidLoads_[b].moment += x.x() * f.y() - x.y() * f.x();
-            grid_.accel[n] = (vNew - grid_.velocity[n]) / dt;
+            // The material's particles take the contact impulse (FLIP update): the acceleration
+            // brings the material's own nodal velocity, not the body's, to the body's new one.
+            const double materialMass = grid_.mass[n] - rigidMass_[n];
+            const Vector2 vMaterial = materialMass > minNodalMass_
+                                          ? Vector2((grid_.momentum[n] - rigidMomentum_[n]) / materialMass)
+                                          : grid_.velocity[n];
+            grid_.accel[n] = (vNew - vMaterial) / dt;
+            grid_.velocity[n] = vMaterial;
         }
     }
-    applyBoundaries(grid_.accel);
     for (int n : grid_.active) grid_.velocity[n] += dt * grid_.accel[n];  // eq. 2.4.3
-    applyBoundaries(grid_.velocity);
+    for (int s = 0; s < 4; ++s) boundaries_[s]->constrainUpdate(grid_.velocity, grid_.accel, dt, sideNodes_[s]);
+}
+
+void MpmSolver::updateBodyFields(double dt)
+{
+    const int nBodies = contact_->nBodies();
+    const auto isRigid = [&](int b) { return !rigid_.empty() && rigid_[b] != nullptr; };
+    const auto constrainBodies = [&] {
+        for (int b = 0; b < nBodies; ++b)
+            if (!isRigid(b))
+                for (int s = 0; s < 4; ++s)
+                    boundaries_[s]->constrainUpdate(contact_->field(b).velocity, contact_->field(b).accel, dt,
+                                                    sideNodes_[s]);
+    };
+    {
+        auto timer = timers_.time("gridUpdate");
+        for (int b = 0; b < nBodies; ++b) {
+            BodyField& f = contact_->field(b);
+            for (int n : grid_.active) {
+                if (!(f.mass[n] > 0.0)) continue;
+                if (isRigid(b)) {  // a rigid body's field is its driver's velocity (seed A14)
+                    const Vector2 vNew = rigid_[b]->velocity(time_ + dt, grid_.nodePosition(n));
+                    f.accel[n] = (vNew - f.velocity[n]) / dt;
+                    f.velocity[n] = vNew;
+                    continue;
+                }
+                Vector2 F = f.force[n];
+                // eq. 3.3.5 on the body's own field. Not at a node shared with another body:
+                // there the contact takes the unbalanced force, and a damping force would only
+                // come back as a false contact load.
+                if (damping_ > 0 && !contact_->shared(n)) {
+                    for (int d = 0; d < 2; ++d) {
+                        const double v = f.velocity[n][d];
+                        F[d] -= damping_ * std::abs(F[d]) * (v > 0 ? 1.0 : (v < 0 ? -1.0 : 0.0));
+                    }
+                }
+                f.accel[n] = f.mass[n] > minNodalMass_ ? Vector2(F / f.mass[n]) : Vector2::Zero();  // eq. 2.4.2
+                f.velocity[n] += dt * f.accel[n];                                                // eq. 2.4.3
+            }
+        }
+        constrainBodies();
+    }
+    {
+        auto timer = timers_.time("contact");  // seed G.4 steps 2 and 4
+        contactNodes_ = contact_->correct(grid_, particles_, rigid_, time_ + dt, dt, rigidLoads_);
+    }
+    auto timer = timers_.time("gridUpdate");
+    constrainBodies();
+    // The centre-of-mass field, for the grid output and function objects.
+    for (int n : grid_.active) {
+        if (!(grid_.mass[n] > 0.0)) continue;
+        Vector2 momentum = Vector2::Zero(), rate = Vector2::Zero();
+        for (int b = 0; b < nBodies; ++b) {
+            const BodyField& f = contact_->field(b);
+            momentum += f.mass[n] * f.velocity[n];
+            rate += f.mass[n] * f.accel[n];
+        }
+        grid_.velocity[n] = momentum / grid_.mass[n];
+        grid_.accel[n] = rate / grid_.mass[n];
+    }
 }
 
 void MpmSolver::updateStress(double dt)
@@ -226,10 +351,12 @@ void MpmSolver::updateStress(double dt)
             // Velocity gradient L_ab = sum_i v_i,a dN_i/dx_b (B v of eq. 2.4.5, plus spin).
             Eigen::Matrix2d L = Eigen::Matrix2d::Zero();
             const std::size_t k0 = q * stride;
+            // With a contact pass each body deforms with its own velocity field.
+            const std::vector<Vector2>& velocity = contact_ ? contact_->field(p.body[q]).velocity : grid_.velocity;
             for (int a = 0; a < stride; ++a) {
                 const int n = weights_.node[k0 + a];
                 if (n < 0) continue;
-                L.noalias() += grid_.velocity[n] * weights_.dN[k0 + a].transpose();
+                L.noalias() += velocity[n] * weights_.dN[k0 + a].transpose();
             }
             if (driverOf(q)) L.setZero();  // rigid: no strain, no spin, no volume change
             SymTensor& de = p.dEps[q];
@@ -260,12 +387,16 @@ void MpmSolver::gridToParticles(double dt)
     for (std::size_t q = 0; q < p.size(); ++q) {
         Vector2 vNew = Vector2::Zero(), a = Vector2::Zero();
         const std::size_t k0 = q * stride;
+        // With a contact pass each body moves with its own corrected field (seed G.4 steps 3-4).
+        const BodyField* body = contact_ ? &contact_->field(p.body[q]) : nullptr;
+        const std::vector<Vector2>& velocity = body ? body->velocity : grid_.velocity;
+        const std::vector<Vector2>& accel = body ? body->accel : grid_.accel;
         for (int k = 0; k < stride; ++k) {
             const int n = weights_.node[k0 + k];
             if (n < 0) continue;
             const double N = weights_.N[k0 + k];
-            vNew += N * grid_.velocity[n];
-            a += N * grid_.accel[n];
+            vNew += N * velocity[n];
+            a += N * accel[n];
         }
         if (const RigidBodyDriver* body = driverOf(q)) {
             p.v[q] = body->velocity(time_ + dt, p.x[q]);
@@ -306,18 +437,24 @@ void MpmSolver::remapVelocity(double dt)
     const Particles& p = particles_;
     const int stride = weights_.stride;
     for (int n : grid_.active) grid_.momentum[n].setZero();
+    if (contact_)
+        for (int b = 0; b < contact_->nBodies(); ++b)
+            for (int n : grid_.active) contact_->field(b).momentum[n].setZero();
     for (std::size_t q = 0; q < p.size(); ++q) {
         const std::size_t k0 = q * stride;
+        BodyField* body = contact_ ? &contact_->field(p.body[q]) : nullptr;
         for (int a = 0; a < stride; ++a) {
             const int n = weights_.node[k0 + a];
             if (n >= 0) grid_.momentum[n] += (weights_.N[k0 + a] * p.m[q]) * p.v[q];
+            if (n >= 0 && body) body->momentum[n] += (weights_.N[k0 + a] * p.m[q]) * p.v[q];
         }
     }
     for (int n : grid_.active)
         grid_.velocity[n] = grid_.mass[n] > 0.0 ? Vector2(grid_.momentum[n] / grid_.mass[n])
                                                          : Vector2::Zero();
-    if (!rigid_.empty()) constrainRigidNodes(time_ + dt);
+    if (drivesRigidNodes()) constrainRigidNodes(time_ + dt);
     applyBoundaries(grid_.velocity);
+    if (contact_) bodyVelocities(time_ + dt);
 }
 
 double MpmSolver::maxParticleSpeed() const

@@ -116,6 +116,14 @@ Simulation::Simulation(const RunOptions& options)
         solver_->setRigidBodies(readRigidBodies(readCaseFile(dir, "constant/rigidBodies"), bodyNames));
     if (fs::exists(fs::path(dir) / "constant/loads"))
         solver_->setLoads(readLoads(readCaseFile(dir, "constant/loads")), bodyNames);
+    if (fs::exists(fs::path(dir) / "constant/contactProperties")) {
+        const Dictionary contactDict = readCaseFile(dir, "constant/contactProperties");
+        ContactSettings contact = readContactProperties(
+            dir, contactDict, bodyNames, [&](int b) { return solver_->rigidBody(b) != nullptr; });
+        solver_->setContact(std::move(contact.law), contact.normals, std::move(contact.surfaces),
+                            static_cast<int>(bodyNames.size()));
+        contactDict.warnUnused();
+    }
 
     context_ = RunContext{dir, startName, bodyNames, materialNames(solver_->materials())};
     if (const Dictionary* fns = controlDict_.subDictPtr("functions"))
@@ -136,6 +144,9 @@ Simulation::Simulation(const RunOptions& options)
           << solver_->grid().nx() << " x " << solver_->grid().ny() << " cells, scheme " << schemeName
           << ", shape functions " << shapeName << ", starting at t = " << time_ << " (" << startName
           << ")\n";
+    if (const MultiFieldContact* contact = solver_->contact())
+        log() << "Contact pass: " << contact->nBodies() << " bodies with their own velocity fields, normals "
+              << (contact->normals() == ContactNormals::rigidSurface ? "rigidSurface" : "massGradient") << "\n";
 }
 
 Simulation::~Simulation() = default;
