@@ -1,4 +1,5 @@
 #include "io/GridVtk.H"
+#include "io/GridVtkRead.H"
 
 #include "core/error.H"
 #include "grid/Grid.H"
@@ -68,11 +69,11 @@ void writeGrid(const std::string& path, const Grid& g, double time)
     detail::writeXmlAtomically(writer, image, path, "grid");
 }
 
-GridVtkInfo readGridInfo(const std::string& path)
+vtkSmartPointer<vtkImageData> readGridImage(const std::string& path, const std::string& hint)
 {
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec))
-        throw InputError(path, 0, "cannot read grid: no such file");
+        throw InputError(path, 0, "cannot read grid: no such file" + (hint.empty() ? "" : " (" + hint + ")"));
     vtkNew<vtkXMLImageDataReader> reader;
     vtkNew<detail::ErrorCollector> errors;
     reader->AddObserver(vtkCommand::ErrorEvent, errors);
@@ -88,12 +89,17 @@ GridVtkInfo readGridInfo(const std::string& path)
                              std::string("cannot read grid: corrupt data (") + e.what() + ")");
         }
     }
-    vtkImageData* image = reader->GetOutput();
+    vtkSmartPointer<vtkImageData> image = reader->GetOutput();
     if (errors->failed || !image)
         throw InputError(path, 0,
                          "cannot read grid: " +
                              (errors->first.empty() ? "VTK returned no data" : errors->first));
+    return image;
+}
 
+GridVtkInfo readGridInfo(const std::string& path)
+{
+    vtkSmartPointer<vtkImageData> image = readGridImage(path);
     GridVtkInfo info;
     image->GetDimensions(info.dimensions.data());
     image->GetOrigin(info.origin.data());

@@ -1,37 +1,18 @@
 #include "GridContactForces.H"
 
 #include "core/error.H"
-#include "io/VtkErrorGuard.H"
+#include "io/GridVtkRead.H"
 
 #include <vtkDataArray.h>
 #include <vtkFieldData.h>
 #include <vtkImageData.h>
-#include <vtkNew.h>
 #include <vtkPointData.h>
-#include <vtkXMLImageDataReader.h>
-
-#include <filesystem>
 
 namespace gpic {
 
 GridContactForces readGridContactForces(const std::string& path)
 {
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec))
-        throw InputError(path, 0, "cannot read grid: no such file (set writeGrid yes in system/controlDict)");
-    vtkNew<vtkXMLImageDataReader> reader;
-    vtkNew<detail::ErrorCollector> errors;
-    reader->AddObserver(vtkCommand::ErrorEvent, errors);
-    reader->SetFileName(path.c_str());
-    {
-        detail::QuietVtk quiet;
-        if (!reader->CanReadFile(path.c_str()))
-            throw InputError(path, 0, "cannot read grid: not a VTK XML ImageData file");
-        reader->Update();
-    }
-    vtkImageData* image = reader->GetOutput();
-    if (errors->failed || !image)
-        throw InputError(path, 0, "cannot read grid: " + (errors->first.empty() ? std::string("no data") : errors->first));
+    vtkSmartPointer<vtkImageData> image = readGridImage(path, "set writeGrid yes in system/controlDict");
     vtkDataArray* f = image->GetPointData() ? image->GetPointData()->GetArray("contactForce") : nullptr;
     if (!f || f->GetNumberOfComponents() < 2)
         throw InputError(path, 0, "the grid has no contactForce: the case needs a rigid body (constant/rigidBodies)");
