@@ -87,6 +87,11 @@ Vector2 RigidSurface::normalInShapeFrame(const Vector2& X, const Vector2& hint) 
     // Nearest face among those that face the material (outward normal against the hint):
     // a node on the line of a face the material cannot touch (a rigid body lying on a grid
     // side) must not take that face. Equally near faces (a corner) share the normal.
+    // A face at right angles to the material's surface does not face it either, even where
+    // round-off or a slight tilt of that surface turns it a little: the node level with a
+    // footing's base just beyond its edge would otherwise take the side face, and the soil
+    // surface there would be held sideways (see doc/contact.md).
+    const double facing = -std::sin(10.0 * M_PI / 180.0) * hint.norm();
     const double scale = (points_[1] - points_[0]).norm();
     const auto nearestFace = [&](bool facingOnly, Vector2& foot, Vector2& normal) {
         double best = std::numeric_limits<double>::max();
@@ -94,7 +99,7 @@ Vector2 RigidSurface::normalInShapeFrame(const Vector2& X, const Vector2& hint) 
             const Vector2& a = points_[i];
             const Vector2 e = points_[(i + 1) % points_.size()] - a;
             const Vector2 outward = Vector2(e.y(), -e.x()).normalized();  // counter-clockwise
-            if (facingOnly && !(outward.dot(hint) < 0)) continue;
+            if (facingOnly && !(outward.dot(hint) < facing)) continue;
             const Vector2 f = a + std::clamp((X - a).dot(e) / e.squaredNorm(), 0.0, 1.0) * e;
             const double dist = (X - f).norm();
             if (dist < best - 1e-12 * scale) {
@@ -116,12 +121,17 @@ Vector2 RigidSurface::normalInShapeFrame(const Vector2& X, const Vector2& hint) 
         normal = anyNormal;
     }
     // Clear of the body, beyond the end of the chosen face (round a corner): the direction
-    // from that corner to the node.
+    // from that corner to the node, where the material wraps round the corner. Where the
+    // material lies across the face instead (its surface normal opposes the face's better
+    // than the corner's direction does: soil under a footing's edge), the face's normal: a
+    // node just beside the corner stands for material under the face, not beside the body.
+    normal.normalize();
     if (toSurface > 1e-12 * scale && !insidePolygon(X)) {
         const Vector2 fromFoot = (X - foot) / dist;
-        if (fromFoot.dot(normal) > 0 && fromFoot.dot(normal.normalized()) < 1 - 1e-12) return fromFoot;
+        const bool wraps = hint.isZero() || fromFoot.dot(hint) < normal.dot(hint);
+        if (fromFoot.dot(normal) > 0 && fromFoot.dot(normal) < 1 - 1e-12 && wraps) return fromFoot;
     }
-    return normal.normalized();
+    return normal;
 }
 
 } // namespace gpic

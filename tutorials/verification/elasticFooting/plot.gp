@@ -1,5 +1,7 @@
 # Principal stresses under the footing centre against Poulos & Davis (the run in the
 # directory run='...', given by Allrun), and the error of the ladder against run time.
+# ref: the closed form's name (Allrun: 'rigid strip' for the rigid footing).
+if (!exists('ref')) ref = 'Poulos & Davis'
 set terminal pngcairo size 900,650 noenhanced
 set output 'stress.png'
 shown = run.'/series.dat'
@@ -9,8 +11,8 @@ set title 'Elastic strip footing (seed 4.8), P = 100 kPa, b = 1 m: first-column 
 set yrange [6:0]
 set xrange [-10:110]
 set key bottom right
-plot shown index 1 using 2:1 with lines lw 2 lc rgb 'blue' title 'sigma1, Poulos & Davis (x1 = 0)', \
-     shown index 1 using 3:1 with lines lw 2 lc rgb 'red' title 'sigma3, Poulos & Davis (x1 = 0)', \
+plot shown index 1 using 2:1 with lines lw 2 lc rgb 'blue' title 'sigma1, '.ref.' (x1 = 0)', \
+     shown index 1 using 3:1 with lines lw 2 lc rgb 'red' title 'sigma3, '.ref.' (x1 = 0)', \
      shown index 0 using 3:1 with points pt 7 ps 0.8 lc rgb 'blue' title 'sigma1, granular-pic', \
      shown index 0 using 4:1 with points pt 5 ps 0.8 lc rgb 'red' title 'sigma3, granular-pic'
 
