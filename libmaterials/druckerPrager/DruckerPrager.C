@@ -1,4 +1,5 @@
 #include "druckerPrager/DruckerPrager.H"
+#include "core/Info.H"
 
 #include "dictionary/Dictionary.H"
 #include "materials/JaumannRate.H"
@@ -90,7 +91,7 @@ DruckerPrager::DruckerPrager(const Dictionary& dict)
     else
         sigmaT_ = apex;
     sigmaT_ = std::min(sigmaT_, apex);
-    std::cout << line.str() << '\n';
+    info() << line.str() << '\n';
 }
 
 void DruckerPrager::updateStress(Particles& p, const ParticleBlock& block, double) const

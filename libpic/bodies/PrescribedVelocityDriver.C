@@ -1,4 +1,5 @@
 #include "bodies/PrescribedVelocityDriver.H"
+#include "core/Info.H"
 
 #include "dictionary/Dictionary.H"
 
@@ -57,7 +58,7 @@ void PrescribedVelocityDriver::recogniseStop(double t) const
     const Vector2 expected = prescribedVelocity(t, info_.centroid);
     if (expected.norm() > 0.0 && info_.velocity.norm() <= 1e-9 * expected.norm()) {
         stopped_ = true;
-        std::cout << "Rigid body " << name_ << " starts at rest: its targetForce was reached before t = "
+        info() << "Rigid body " << name_ << " starts at rest: its targetForce was reached before t = "
                   << t << " s\n";
     }
 }
@@ -75,7 +76,7 @@ void PrescribedVelocityDriver::advance(double t, double dt, const RigidBodyLoad&
     const double along = load.force.dot(targetForce_.normalized());
     if (along >= targetForce_.norm()) {
         stopped_ = true;
-        std::cout << "Rigid body " << name_ << " reached its targetForce at t = " << t + dt
+        info() << "Rigid body " << name_ << " reached its targetForce at t = " << t + dt
                   << " s (force along it " << along << " N/m): held still from now on\n";
     }
 }

@@ -1,4 +1,5 @@
 #include "core/Plugins.H"
+#include "core/Info.H"
 
 #include "core/error.H"
 #include "dictionary/Dictionary.H"
@@ -31,7 +32,7 @@ void Plugins::open(const std::string& library, const std::string& file, int line
                              " (is it on LD_LIBRARY_PATH? source etc/bashrc)");
     }
     list.push_back(library);
-    std::cout << "Loaded library " << library << '\n';
+    info() << "Loaded library " << library << '\n';
 }
 
 void Plugins::open(const Dictionary& dict, const std::string& keyword)

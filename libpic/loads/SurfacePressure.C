@@ -1,4 +1,5 @@
 #include "loads/SurfacePressure.H"
+#include "core/Info.H"
 
 #include "core/error.H"
 #include "dictionary/Dictionary.H"
@@ -164,7 +165,7 @@ void SurfacePressure::initialise(const Particles& p, const Grid& grid,
         loaded_.push_back(c[i].q);
         lengths_.push_back(length[i]);
     }
-    std::cout << "Load " << name_ << ": pressure on " << loaded_.size() << " particles of body "
+    info() << "Load " << name_ << ": pressure on " << loaded_.size() << " particles of body "
               << bodyName_ << " along " << L << " m, outward normal " << str(normalOut_) << '\n';
 }
 

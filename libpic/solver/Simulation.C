@@ -1,6 +1,7 @@
 #include "solver/Simulation.H"
 
 #include "core/Plugins.H"
+#include "core/Info.H"
 #include "core/error.H"
 #include "io/GridVtk.H"
 #include "io/ParticlesVtk.H"
@@ -25,12 +26,6 @@ std::string exact(double v)
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.17g", v);
     return buf;
-}
-
-std::ostream& nullStream()
-{
-    static std::ofstream sink;
-    return sink;
 }
 
 //- Map the material ids stored in a time directory onto the order of constant/materials.
@@ -61,6 +56,7 @@ Simulation::Simulation(const RunOptions& options)
     : options_(options),
       controlDict_(readCaseFile(options.caseDir, "system/controlDict"))
 {
+    setQuiet(options_.quiet);
     const std::string& dir = options_.caseDir;
     caseName_ = caseName(dir);
     Plugins::open(controlDict_, "libs");
@@ -151,7 +147,7 @@ Simulation::Simulation(const RunOptions& options)
 
 Simulation::~Simulation() = default;
 
-std::ostream& Simulation::log() const { return options_.quiet ? nullStream() : std::cout; }
+std::ostream& Simulation::log() const { return info(); }
 
 void Simulation::write()
 {

@@ -8,7 +8,7 @@ int main(int argc, char** argv)
     namespace po = boost::program_options;
     po::options_description options("picSolver options");
     options.add_options()("time", po::value<double>(), "start from this time directory")(
-        "quiet", "no progress lines");
+        "quiet", "only warnings and errors (no selection, progress or timing lines)");
     return gpic::applicationMain(
         argc, argv, "picSolver: explicit material point (PIC) solver; run inside a case or with -case",
         options, [](const po::variables_map& vm) {
