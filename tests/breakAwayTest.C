@@ -9,12 +9,14 @@
 //     exactly mu times the normal one (Coulomb), with the exact surface normals.
 #include "functionObjects/FunctionObject.H"
 #include "support/CaseRunner.H"
+#include "support/PistonCase.H"
 
 #include <algorithm>
 #include <cmath>
 
 using namespace gpic::test;
 using gpic::Vector2;
+namespace piston = gpic::test::piston;
 
 namespace {
 
@@ -133,47 +135,18 @@ TEST(RigidContact, aPistonCompressesABlockToTheUniaxialStrainStressAndFeelsItsRe
 {
     // As tests/rigidBodyTest.C, with the contact law: a block of L = 1 m in a smooth channel
     // against a fixed wall, pushed by a rigid piston at v = 0.01 m/s for T = 2 s (damped).
-    const double E = 1e6, nu = 0.3, L = 1.0, h = 0.2, v = 0.01, T = 2.0;
     ScratchDir scratch("piston");
-    const fs::path dir = scratch.path() / "piston";
-    fs::create_directories(dir / "system");
-    fs::create_directories(dir / "constant");
-    std::ofstream(dir / "system/controlDict")
-        << "endTime " << T << ";\ndeltaT 1;\nadjustTimeStep yes;\nmaxCourant 0.5;\n"
-        << "writeControl adjustableRunTime;\nwriteInterval 1;\ndamping 0.5;\n"
-        << "functions { loads { type testLoadRecorder; } }\n";
-    std::ofstream(dir / "constant/grid")
-        << "origin (0 0);\ncellSize 0.1;\nnCells (14 2);\n"
-        << "boundaries { left { type fixed; } right { type free; } bottom { type slip; } top { type slip; } }\n";
-    std::ofstream(dir / "constant/materials")
-        << "soil { type linearElastic; rho 1000; E " << E << "; nu " << nu << "; }\n"
-        << "steel { type linearElastic; rho 7850; E 2e11; nu 0.3; }\n";
-    std::ofstream(dir / "constant/bodies")
-        << "block { material soil; particlesPerCell 2; shape { type rectangle; min (0 0); max (" << L << " " << h
-        << "); } }\n"
-        << "piston { material steel; particlesPerCell 2; shape { type rectangle; min (" << L
-        << " 0); max (1.2 " << h << "); } }\n";
-    std::ofstream(dir / "constant/rigidBodies") << "piston { type prescribedVelocity; velocity (" << -v << " 0); }\n";
-    std::ofstream(dir / "constant/contactProperties") << "law coulombFriction;\nmu 0.3;\nnormals rigidSurface;\n";
+    const fs::path dir = piston::writeCase(scratch, "functions { loads { type testLoadRecorder; } }\n",
+                                           "law coulombFriction;\nmu 0.3;\nnormals rigidSurface;\n");
     LoadRecorder::records().clear();
     const auto simulation = runAndKeep(dir);
     const gpic::Particles& p = simulation->solver().particles();
 
-    const double K = E / (3 * (1 - 2 * nu)), G = E / (2 * (1 + nu));
-    const double s11 = -(K + 4 * G / 3) * v * T / L, s22 = (K - 2 * G / 3) / (K + 4 * G / 3) * s11;
-    double mean11 = 0, mean22 = 0;
-    int n = 0;
-    for (std::size_t q = 0; q < p.size(); ++q)
-        if (p.body[q] == 0) {
-            mean11 += p.sigma[q][gpic::XX];
-            mean22 += p.sigma[q][gpic::YY];
-            ++n;
-        }
-    mean11 /= n;
-    mean22 /= n;
+    const Vector2 mean = piston::meanBlockStress(p);
+    const double s11 = piston::sigma11(), s22 = piston::sigma22(), h = piston::h;
     // 3 %, as the single-field test: the start-up wave (rho c v = 1.4 % of sigma11) is damped out.
-    EXPECT_NEAR(mean11, s11, 0.03 * std::abs(s11));
-    EXPECT_NEAR(mean22, s22, 0.03 * std::abs(s22));
+    EXPECT_NEAR(mean.x(), s11, 0.03 * std::abs(s11));
+    EXPECT_NEAR(mean.y(), s22, 0.03 * std::abs(s22));
     // Newton's third law at the piston: the block pushes it back (+x) with -sigma11 h.
     const auto& last = LoadRecorder::records().back().loads;
     EXPECT_NEAR(last[1].force.x(), -s11 * h, 0.03 * std::abs(s11 * h));
