@@ -142,6 +142,24 @@ TEST(Drivers, aRotatingBodyTurnsAboutACentreThatMovesWithIt)
     }
 }
 
+TEST(Drivers, aTurningBodyKeepsItsShapeStepByStep)
+{
+    // One full turn in 100 steps about a centre that translates: each point must come back
+    // to its start shifted by v_c T, at its original distance from the centre. A first-order
+    // step x += dt v(t + dt, x) would grow the radius by about pi omega dt per turn (3 % here).
+    const double omega = 2.0, T = 2 * pi / omega, dt = T / 100;
+    const auto d = driver("type prescribedVelocity; velocity (0.5 0); omega 2; centre (1 0);");
+    Vector2 x(1.0, 0.25);
+    double t = 0;
+    for (int step = 0; step < 100; ++step, t += dt) {
+        x = d->move(t, dt, x);
+        const Vector2 c(1.0 + 0.5 * (t + dt), 0.0);
+        ASSERT_NEAR((x - c).norm(), 0.25, 1e-12) << "step " << step;
+    }
+    EXPECT_NEAR(x.x(), 1.0 + 0.5 * T, 1e-12);
+    EXPECT_NEAR(x.y(), 0.25, 1e-12);
+}
+
 TEST(Drivers, badDriverInputNamesTheKeyword)
 {
     EXPECT_TRUE(contains(driverError("body { type prescribedVelocity; omega 1; }"), "omega needs centre"));

@@ -1,9 +1,9 @@
 #include "bodies/PrescribedVelocityDriver.H"
-#include "core/Info.H"
 
+#include "core/Info.H"
 #include "dictionary/Dictionary.H"
 
-#include <iostream>
+#include <cmath>
 
 namespace gpic {
 
@@ -67,6 +67,19 @@ Vector2 PrescribedVelocityDriver::velocity(double t, const Vector2& x) const
 {
     if (!started_) recogniseStop(t);
     return stopped_ ? Vector2::Zero() : prescribedVelocity(t, x);
+}
+
+Vector2 PrescribedVelocityDriver::move(double t, double dt, const Vector2& x) const
+{
+    if (!started_) recogniseStop(t);
+    if (stopped_) return x;
+    const Vector2 c0 = centre(t);
+    const Vector2 c1 = centre(t + dt);
+    if (omega_.isZero()) return x + (c1 - c0);
+    const double turn = omega_.integral(t, t + dt);
+    const double c = std::cos(turn), s = std::sin(turn);
+    const Vector2 r = x - c0;
+    return c1 + Vector2(c * r.x() - s * r.y(), s * r.x() + c * r.y());
 }
 
 void PrescribedVelocityDriver::advance(double t, double dt, const RigidBodyLoad& load)

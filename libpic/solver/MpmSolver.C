@@ -399,8 +399,8 @@ void MpmSolver::gridToParticles(double dt)
             a += N * accel[n];
         }
         if (const RigidBodyDriver* body = driverOf(q)) {
+            p.x[q] = body->move(time_, dt, p.x[q]);
             p.v[q] = body->velocity(time_ + dt, p.x[q]);
-            p.x[q] += dt * p.v[q];
             continue;
         }
         p.x[q] += dt * vNew;  // eq. 2.4.7
