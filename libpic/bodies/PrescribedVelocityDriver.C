@@ -23,6 +23,7 @@ PrescribedVelocityDriver::PrescribedVelocityDriver(const Dictionary& dict) : nam
     }
     centre0_ = dict.getOrDefault<Vector2>("centre", Vector2::Zero());
     cacheCentre_ = centre0_;
+    previousCentre_ = centre0_;
     if (dict.found("targetForce")) {
         targetForce_ = dict.getChecked<Vector2>("targetForce", [](const Vector2& f) { return f.norm() > 0; },
                                                 "a non-zero force (Fx Fy) [N/m]");
@@ -33,8 +34,11 @@ PrescribedVelocityDriver::PrescribedVelocityDriver(const Dictionary& dict) : nam
 Vector2 PrescribedVelocityDriver::centre(double t) const
 {
     if (t == cacheTime_) return cacheCentre_;
+    if (t == previousTime_) return previousCentre_;
     const Vector2 c = cacheCentre_ + integralOf(velocity_, cacheTime_, t);
     if (t > cacheTime_) {
+        previousTime_ = cacheTime_;
+        previousCentre_ = cacheCentre_;
         cacheTime_ = t;
         cacheCentre_ = c;
     }
@@ -73,9 +77,9 @@ Vector2 PrescribedVelocityDriver::move(double t, double dt, const Vector2& x) co
 {
     if (!started_) recogniseStop(t);
     if (stopped_) return x;
+    if (omega_.isZero()) return x + integralOf(velocity_, t, t + dt);
     const Vector2 c0 = centre(t);
     const Vector2 c1 = centre(t + dt);
-    if (omega_.isZero()) return x + (c1 - c0);
     const double turn = omega_.integral(t, t + dt);
     const double c = std::cos(turn), s = std::sin(turn);
     const Vector2 r = x - c0;
