@@ -94,4 +94,21 @@ std::vector<ParticleBlock> Particles::blocks() const
     return runs;
 }
 
+namespace {
+template<class T>
+std::size_t held(const std::vector<T>& a)
+{
+    return a.capacity() * sizeof(T);
+}
+} // namespace
+
+std::size_t Particles::bytes() const
+{
+    std::size_t total = held(id) + held(body) + held(material) + held(x) + held(x0) + held(v) + held(m) +
+                        held(V) + held(halfSize) + held(sigma) + held(eps) + held(epsP) + held(work) +
+                        held(dEps) + held(dOmega);
+    for (const auto& h : history_) total += held(h);
+    return total;
+}
+
 } // namespace gpic

@@ -477,4 +477,13 @@ double MpmSolver::maxWaveSpeed() const
     return c;
 }
 
+double MpmSolver::bytesPerParticle() const
+{
+    if (particles_.size() == 0) return 0.0;
+    const std::size_t weights = weights_.node.capacity() * sizeof(int) + weights_.N.capacity() * sizeof(double) +
+                                weights_.dN.capacity() * sizeof(Vector2);
+    const std::size_t loads = particleForce_.capacity() * sizeof(Vector2);
+    return double(particles_.bytes() + weights + loads) / double(particles_.size());
+}
+
 } // namespace gpic
