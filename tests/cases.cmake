@@ -29,3 +29,9 @@ foreach(tutorial "verification/elasticBar;bar.png;error.png"
                    ${PROJECT_SOURCE_DIR} ${PROJECT_BINARY_DIR} ${path} ${plots})
   set_tests_properties(${name} PROPERTIES TIMEOUT 600 LABELS integration)
 endforeach()
+
+# The benchmark script and its scenes, a few steps each (bench/run -quick).
+add_test(NAME benchQuick
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/scripts/benchQuick.sh
+                 ${PROJECT_SOURCE_DIR} ${PROJECT_BINARY_DIR})
+set_tests_properties(benchQuick PROPERTIES TIMEOUT 600 LABELS integration)

@@ -1,5 +1,6 @@
 #include "grid/Grid.H"
 
+#include "core/Threads.H"
 #include "dictionary/Dictionary.H"
 
 #include <algorithm>
@@ -56,7 +57,9 @@ void Grid::allocate()
 void Grid::resetFields()
 {
     // Only nodes touched last step hold non-zero values.
-    for (int n : active) {
+#pragma omp parallel for schedule(static) if (static_cast<long>(active.size()) >= minParallelWork())
+    for (std::size_t k = 0; k < active.size(); ++k) {
+        const int n = active[k];
         mass[n] = 0.0;
         momentum[n].setZero();
         velocity[n].setZero();
@@ -67,6 +70,14 @@ void Grid::resetFields()
         isActive_[n] = 0;
     }
     active.clear();
+}
+
+void Grid::collectActive()
+{
+    active.clear();
+    const int n = nNodes();
+    for (int i = 0; i < n; ++i)
+        if (isActive_[static_cast<std::size_t>(i)]) active.push_back(i);
 }
 
 bool Grid::contains(const Vector2& x) const

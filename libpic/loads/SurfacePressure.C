@@ -176,4 +176,19 @@ void SurfacePressure::addForces(double t, const Particles&, std::vector<Vector2>
     for (std::size_t k = 0; k < loaded_.size(); ++k) force[loaded_[k]] += lengths_[k] * perLength;
 }
 
+void SurfacePressure::renumber(const std::vector<std::size_t>& newIndex)
+{
+    // A removed particle takes its share of the loaded length with it.
+    std::size_t kept = 0;
+    for (std::size_t k = 0; k < loaded_.size(); ++k) {
+        const std::size_t q = newIndex[loaded_[k]];
+        if (q == removedParticle) continue;
+        loaded_[kept] = q;
+        lengths_[kept] = lengths_[k];
+        ++kept;
+    }
+    loaded_.resize(kept);
+    lengths_.resize(kept);
+}
+
 } // namespace gpic

@@ -62,7 +62,7 @@ const std::vector<double>& Particles::history(const std::string& name) const
 namespace {
 template <class T> void permute(std::vector<T>& a, const std::vector<std::size_t>& order)
 {
-    std::vector<T> sorted(a.size());
+    std::vector<T> sorted(order.size());
     for (std::size_t i = 0; i < order.size(); ++i) sorted[i] = a[order[i]];
     a.swap(sorted);
 }
@@ -74,6 +74,11 @@ void Particles::sortByMaterial()
     std::iota(order.begin(), order.end(), 0);
     std::stable_sort(order.begin(), order.end(),
                      [&](std::size_t a, std::size_t b) { return material[a] < material[b]; });
+    reorder(order);
+}
+
+void Particles::reorder(const std::vector<std::size_t>& order)
+{
     permute(id, order); permute(body, order); permute(material, order);
     permute(x, order); permute(x0, order); permute(v, order);
     permute(m, order); permute(V, order); permute(halfSize, order);

@@ -1,5 +1,7 @@
 #include "shapeFunctions/BilinearShape.H"
 
+#include "core/Threads.H"
+
 namespace gpic {
 
 GPIC_REGISTER(ShapeFunction, BilinearShape, "bilinear")
@@ -8,7 +10,9 @@ void BilinearShape::evaluate(const Grid& grid, const Particles& p, ShapeWeights&
 {
     w.resize(p.size(), 4);
     const Vector2 h = grid.cellSize();
-    for (std::size_t q = 0; q < p.size(); ++q) {
+    const auto n = static_cast<long>(p.size());
+#pragma omp parallel for schedule(static) if (n >= minParallelWork())
+    for (long q = 0; q < n; ++q) {
         int i, j;
         grid.cellOf(p.x[q], i, j);
         const Vector2 local = p.x[q] - grid.nodePosition(grid.node(i, j));

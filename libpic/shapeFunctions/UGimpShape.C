@@ -1,5 +1,6 @@
 #include "shapeFunctions/UGimpShape.H"
 
+#include "core/Threads.H"
 #include <cmath>
 
 namespace gpic {
@@ -29,7 +30,9 @@ void UGimpShape::evaluate(const Grid& grid, const Particles& p, ShapeWeights& w)
 {
     w.resize(p.size(), 9);
     const Vector2 h = grid.cellSize();
-    for (std::size_t q = 0; q < p.size(); ++q) {
+    const auto n = static_cast<long>(p.size());
+#pragma omp parallel for schedule(static) if (n >= minParallelWork())
+    for (long q = 0; q < n; ++q) {
         int i, j;
         grid.cellOf(p.x[q], i, j);
         const Vector2 local = p.x[q] - grid.nodePosition(grid.node(i, j));

@@ -1,9 +1,11 @@
 #include "solver/MpmSolver.H"
 
+#include "core/Threads.H"
 #include "core/error.H"
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <sstream>
 
 namespace gpic {
@@ -21,15 +23,22 @@ MpmSolver::MpmSolver(Grid grid, Particles particles,
                      std::unique_ptr<ShapeFunction> shape,
                      std::array<std::unique_ptr<BoundaryCondition>, 4> boundaries)
     : grid_(std::move(grid)), particles_(std::move(particles)), materials_(std::move(materials)),
-      shape_(std::move(shape)), boundaries_(std::move(boundaries))
+      shape_(std::move(shape)), boundaries_(std::move(boundaries)), strips_(grid_)
 {
-    for (int s = 0; s < 4; ++s) sideNodes_[s] = grid_.sideNodes(static_cast<GridSide>(s));
+    // Constrained side nodes: an opening's nodes are left free.
+    for (int s = 0; s < 4; ++s) {
+        const BoundaryCondition& bc = *boundaries_[s];
+        for (int n : grid_.sideNodes(static_cast<GridSide>(s)))
+            if (bc.isOpen(bc.along(grid_.nodePosition(n)))) hasOutlet_ = true;
+            else sideNodes_[s].push_back(n);
+        hasOutlet_ = hasOutlet_ || bc.letsOut();
+    }
     for (const auto& m : materials_) {
         for (const auto& h : m->historyNames()) particles_.declareHistory(h);
         hasRotation_ = hasRotation_ || m->needsRotation();
     }
     particles_.sortByMaterial();
-    blocks_ = particles_.blocks();
+    reindex();
     materialDeforms_.assign(materials_.size(), 1);
     for (const auto& b : blocks_)
         if (b.material < 0 || b.material >= static_cast<int>(materials_.size()))
@@ -45,21 +54,67 @@ void MpmSolver::applyBoundaries(std::vector<Vector2>& field) const
     for (int s = 0; s < 4; ++s) boundaries_[s]->constrain(field, sideNodes_[s]);
 }
 
+void MpmSolver::reindex()
+{
+    blocks_ = particles_.blocks();
+    // Pieces of a fixed size: the material update then balances over any thread count.
+    constexpr std::size_t chunk = 512;
+    chunks_.clear();
+    for (const auto& b : blocks_)
+        for (std::size_t begin = b.begin; begin < b.end; begin += chunk)
+            chunks_.push_back({begin, std::min(b.end, begin + chunk), b.material});
+    rigidParticles_.clear();
+    for (std::size_t q = 0; q < particles_.size(); ++q)
+        if (driverOf(q)) rigidParticles_.push_back(q);
+}
+
+void MpmSolver::sortParticles()
+{
+    auto timer = timers_.time("sort");
+    Particles& p = particles_;
+    const auto n = static_cast<long>(p.size());
+    sortKey_.resize(p.size());
+    const long nCells = grid_.nCells();
+#pragma omp parallel for schedule(static) if (n >= minParallelWork())
+    for (long q = 0; q < n; ++q)
+        sortKey_[q] = grid_.contains(p.x[q]) ? p.material[q] * nCells + strips_.cellKey(grid_, p.x[q])
+                                             : p.material[q] * nCells;  // reported by computeWeights
+    sortOrder_.resize(p.size());
+    std::iota(sortOrder_.begin(), sortOrder_.end(), std::size_t(0));
+    // Stable: equal keys keep their order, so the result depends on the state only.
+    std::stable_sort(sortOrder_.begin(), sortOrder_.end(),
+                     [&](std::size_t a, std::size_t b) { return sortKey_[a] < sortKey_[b]; });
+    if (std::is_sorted(sortOrder_.begin(), sortOrder_.end())) return;
+    p.reorder(sortOrder_);
+    if (!particleForce_.empty()) {
+        std::vector<std::size_t> newIndex(p.size());
+        for (std::size_t k = 0; k < sortOrder_.size(); ++k) newIndex[sortOrder_[k]] = k;
+        for (auto& load : loads_) load->renumber(newIndex);
+    }
+    reindex();
+}
+
 void MpmSolver::computeWeights()
 {
     auto timer = timers_.time("shapeFunctions");
     const Particles& p = particles_;
-    for (std::size_t q = 0; q < p.size(); ++q) {
-        if (!grid_.contains(p.x[q]) || !std::isfinite(p.x[q].x()) || !std::isfinite(p.x[q].y())) {
-            std::ostringstream msg;
-            msg << "particle " << p.id[q] << " (body " << p.body[q] << ", material "
-                << materials_[p.material[q]]->name() << ") at (" << p.x[q].x() << " "
-                << p.x[q].y() << ") is outside the grid [" << grid_.origin().transpose()
-                << "] - [" << grid_.upper().transpose() << "]";
-            throw RunError(msg.str());
-        }
+    const auto n = static_cast<long>(p.size());
+    long first = n;  // the lowest-numbered particle outside the grid, for a stable message
+#pragma omp parallel for schedule(static) reduction(min : first) if (n >= minParallelWork())
+    for (long q = 0; q < n; ++q)
+        if (!grid_.contains(p.x[q]) || !std::isfinite(p.x[q].x()) || !std::isfinite(p.x[q].y()))
+            first = std::min(first, q);
+    if (first < n) {
+        const auto q = static_cast<std::size_t>(first);
+        std::ostringstream msg;
+        msg << "particle " << p.id[q] << " (body " << p.body[q] << ", material "
+            << materials_[p.material[q]]->name() << ") at (" << p.x[q].x() << " "
+            << p.x[q].y() << ") is outside the grid [" << grid_.origin().transpose()
+            << "] - [" << grid_.upper().transpose() << "]";
+        throw RunError(msg.str());
     }
     shape_->evaluate(grid_, p, weights_);
+    strips_.assign(grid_, p);
 }
 
 void MpmSolver::particlesToGrid()
@@ -76,14 +131,14 @@ void MpmSolver::particlesToGrid()
     grid_.resetFields();
     const Particles& p = particles_;
     const int stride = weights_.stride;
-    for (std::size_t q = 0; q < p.size(); ++q) {
+    strips_.forEach([&](std::size_t q) {
         const std::size_t k0 = q * stride;
         BodyField* body = contact_ ? &contact_->field(p.body[q]) : nullptr;
         for (int a = 0; a < stride; ++a) {
             const int n = weights_.node[k0 + a];
             const double N = weights_.N[k0 + a];
             if (n < 0) continue;
-            grid_.activate(n);  // also at N = 0: its gradient may still carry force
+            grid_.markActive(n);  // also at N = 0: its gradient may still carry force
             if (body) {  // the body's own field, from its particles only (seed G.4 step 1)
                 body->mass[n] += N * p.m[q];
                 body->momentum[n] += (N * p.m[q]) * p.v[q];
@@ -97,20 +152,26 @@ void MpmSolver::particlesToGrid()
             grid_.mass[n] += N * p.m[q];             // lumped mass, row sums of eq. 2.3.7
             grid_.momentum[n] += (N * p.m[q]) * p.v[q];  // eq. 2.4.1
         }
-    }
+    });
+    grid_.collectActive();
+    const auto nActive = static_cast<long>(grid_.active.size());
     if (contact_)  // the system (centre-of-mass) field is the sum of the bodies' (F.8.6)
-        for (int b = 0; b < contact_->nBodies(); ++b) {
-            const BodyField& f = contact_->field(b);
-            for (int n : grid_.active) {
+#pragma omp parallel for schedule(static) if (nActive >= minParallelWork())
+        for (long k = 0; k < nActive; ++k) {
+            const int n = grid_.active[k];
+            for (int b = 0; b < contact_->nBodies(); ++b) {
+                const BodyField& f = contact_->field(b);
                 grid_.mass[n] += f.mass[n];
                 grid_.momentum[n] += f.momentum[n];
             }
         }
     // No small-mass cut-off: p_i/m_i is a weighted mean of particle velocities, exact for
     // any m_i > 0; zeroing light nodes would put spurious strain into a rigid translation.
-    for (int n : grid_.active)
-        grid_.velocity[n] = grid_.mass[n] > 0.0 ? Vector2(grid_.momentum[n] / grid_.mass[n])
-                                                         : Vector2::Zero();
+#pragma omp parallel for schedule(static) if (nActive >= minParallelWork())
+    for (long k = 0; k < nActive; ++k) {
+        const int n = grid_.active[k];
+        grid_.velocity[n] = grid_.mass[n] > 0.0 ? Vector2(grid_.momentum[n] / grid_.mass[n]) : Vector2::Zero();
+    }
     if (driven) constrainRigidNodes(time_);
     applyBoundaries(grid_.velocity);
     if (contact_) bodyVelocities(time_);
@@ -121,12 +182,18 @@ void MpmSolver::bodyVelocities(double t)
     for (int b = 0; b < contact_->nBodies(); ++b) {
         BodyField& f = contact_->field(b);
         const RigidBodyDriver* driver = rigid_.empty() ? nullptr : rigid_[b].get();
-        for (int n : grid_.active) {
-            if (!(f.mass[n] > 0.0)) continue;
-            f.velocity[n] = driver ? driver->velocity(t, grid_.nodePosition(n))
-                                   : Vector2(f.momentum[n] / f.mass[n]);
+        if (driver) {  // drivers cache their motion: serial
+            for (int n : grid_.active)
+                if (f.mass[n] > 0.0) f.velocity[n] = driver->velocity(t, grid_.nodePosition(n));
+            continue;
         }
-        if (!driver) applyBoundaries(f.velocity);
+        const auto nActive = static_cast<long>(grid_.active.size());
+#pragma omp parallel for schedule(static) if (nActive >= minParallelWork())
+        for (long k = 0; k < nActive; ++k) {
+            const int n = grid_.active[k];
+            if (f.mass[n] > 0.0) f.velocity[n] = f.momentum[n] / f.mass[n];
+        }
+        applyBoundaries(f.velocity);
     }
 }
 
@@ -182,6 +249,7 @@ void MpmSolver::setRigidBodies(std::vector<std::unique_ptr<RigidBodyDriver>> dri
     materialDeforms_.assign(materials_.size(), anyRigid ? 0 : 1);
     for (std::size_t q = 0; q < particles_.size(); ++q)
         if (!driverOf(q)) materialDeforms_[particles_.material[q]] = 1;
+    reindex();
 }
 
 void MpmSolver::constrainRigidNodes(double t)
@@ -208,7 +276,7 @@ void MpmSolver::computeForces()
         std::fill(particleForce_.begin(), particleForce_.end(), Vector2::Zero());
         for (const auto& load : loads_) load->addForces(time_, p, particleForce_);
     }
-    for (std::size_t q = 0; q < p.size(); ++q) {
+    strips_.forEach([&](std::size_t q) {
         // A rigid body carries no stress: its nodes are driven instead.
         const SymTensor s = driverOf(q) ? SymTensor::Zero() : p.sigma[q];
         const std::size_t k0 = q * stride;
@@ -217,22 +285,16 @@ void MpmSolver::computeForces()
             const int n = weights_.node[k0 + a];
             if (n < 0) continue;
             const Vector2& dN = weights_.dN[k0 + a];
-            if (body) {  // the same terms on the body's own field, summed into the system's
-                const Vector2 fInt = -p.V[q] * Vector2(s[XX] * dN.x() + s[XY] * dN.y(), s[XY] * dN.x() + s[YY] * dN.y());
-                Vector2 fExt = (weights_.N[k0 + a] * p.m[q]) * gravity_;
-                if (!loads_.empty()) fExt += weights_.N[k0 + a] * particleForce_[q];
-                grid_.fInt[n] += fInt;
-                grid_.fExt[n] += fExt;
-                body->force[n] += fInt + fExt;
-                continue;
-            }
             // eq. 2.3.8: F_int = -sum_p V_p B_p^T sigma_p
-            grid_.fInt[n] -= p.V[q] * Vector2(s[XX] * dN.x() + s[XY] * dN.y(),
-                                              s[XY] * dN.x() + s[YY] * dN.y());
-            grid_.fExt[n] += (weights_.N[k0 + a] * p.m[q]) * gravity_;  // eq. 2.3.9
-            if (!loads_.empty()) grid_.fExt[n] += weights_.N[k0 + a] * particleForce_[q];  // traction term
+            const Vector2 fInt = -p.V[q] * Vector2(s[XX] * dN.x() + s[XY] * dN.y(), s[XY] * dN.x() + s[YY] * dN.y());
+            Vector2 fExt = (weights_.N[k0 + a] * p.m[q]) * gravity_;  // eq. 2.3.9
+            if (!loads_.empty()) fExt += weights_.N[k0 + a] * particleForce_[q];  // traction term
+            grid_.fInt[n] += fInt;
+            grid_.fExt[n] += fExt;
+            // With a contact pass the same terms go to the body's own field too.
+            if (body) body->force[n] += fInt + fExt;
         }
-    }
+    });
 }
 
 void MpmSolver::updateGrid(double dt)
@@ -242,7 +304,10 @@ void MpmSolver::updateGrid(double dt)
         return;
     }
     auto timer = timers_.time("gridUpdate");
-    for (int n : grid_.active) {
+    const auto nActive = static_cast<long>(grid_.active.size());
+#pragma omp parallel for schedule(static) if (nActive >= minParallelWork())
+    for (long k = 0; k < nActive; ++k) {
+        const int n = grid_.active[k];
         Vector2 F = grid_.fInt[n] + grid_.fExt[n];
         if (damping_ > 0) {
             // eq. 3.3.5: F_damp = -alpha |F_ext + F_int| sign(v_n), per component.
@@ -278,7 +343,11 @@ void MpmSolver::updateGrid(double dt)
             grid_.velocity[n] = vMaterial;
         }
     }
-    for (int n : grid_.active) grid_.velocity[n] += dt * grid_.accel[n];  // eq. 2.4.3
+#pragma omp parallel for schedule(static) if (nActive >= minParallelWork())
+    for (long k = 0; k < nActive; ++k) {
+        const int n = grid_.active[k];
+        grid_.velocity[n] += dt * grid_.accel[n];  // eq. 2.4.3
+    }
     for (int s = 0; s < 4; ++s) boundaries_[s]->constrainUpdate(grid_.velocity, grid_.accel, dt, sideNodes_[s]);
 }
 
@@ -295,16 +364,22 @@ void MpmSolver::updateBodyFields(double dt)
     };
     {
         auto timer = timers_.time("gridUpdate");
+        const auto nActive = static_cast<long>(grid_.active.size());
         for (int b = 0; b < nBodies; ++b) {
             BodyField& f = contact_->field(b);
-            for (int n : grid_.active) {
-                if (!(f.mass[n] > 0.0)) continue;
-                if (isRigid(b)) {  // a rigid body's field is its driver's velocity (seed A14)
+            if (isRigid(b)) {  // a rigid body's field is its driver's velocity (seed A14)
+                for (int n : grid_.active) {  // drivers cache their motion: serial
+                    if (!(f.mass[n] > 0.0)) continue;
                     const Vector2 vNew = rigid_[b]->velocity(time_ + dt, grid_.nodePosition(n));
                     f.accel[n] = (vNew - f.velocity[n]) / dt;
                     f.velocity[n] = vNew;
-                    continue;
                 }
+                continue;
+            }
+#pragma omp parallel for schedule(static) if (nActive >= minParallelWork())
+            for (long k = 0; k < nActive; ++k) {
+                const int n = grid_.active[k];
+                if (!(f.mass[n] > 0.0)) continue;
                 Vector2 F = f.force[n];
                 // eq. 3.3.5 on the body's own field. Not at a node shared with another body:
                 // there the contact takes the unbalanced force, and a damping force would only
@@ -328,7 +403,10 @@ void MpmSolver::updateBodyFields(double dt)
     auto timer = timers_.time("gridUpdate");
     constrainBodies();
     // The centre-of-mass field, for the grid output and function objects.
-    for (int n : grid_.active) {
+    const auto nActive = static_cast<long>(grid_.active.size());
+#pragma omp parallel for schedule(static) if (nActive >= minParallelWork())
+    for (long k = 0; k < nActive; ++k) {
+        const int n = grid_.active[k];
         if (!(grid_.mass[n] > 0.0)) continue;
         Vector2 momentum = Vector2::Zero(), rate = Vector2::Zero();
         for (int b = 0; b < nBodies; ++b) {
@@ -343,11 +421,13 @@ void MpmSolver::updateBodyFields(double dt)
 
 void MpmSolver::updateStress(double dt)
 {
+    Particles& p = particles_;
+    const auto nParticles = static_cast<long>(p.size());
     {
         auto timer = timers_.time("strain");
-        Particles& p = particles_;
         const int stride = weights_.stride;
-        for (std::size_t q = 0; q < p.size(); ++q) {
+#pragma omp parallel for schedule(static) if (nParticles >= minParallelWork())
+        for (long q = 0; q < nParticles; ++q) {
             // Velocity gradient L_ab = sum_i v_i,a dN_i/dx_b (B v of eq. 2.4.5, plus spin).
             Eigen::Matrix2d L = Eigen::Matrix2d::Zero();
             const std::size_t k0 = q * stride;
@@ -368,14 +448,18 @@ void MpmSolver::updateStress(double dt)
             p.eps[q] += de;
             // Volume follows the deformation: V_{t+1} = det(I + dt L) V_t.
             p.V[q] *= (1.0 + dt * L(0, 0)) * (1.0 + dt * L(1, 1)) - dt * dt * L(0, 1) * L(1, 0);
+            // Stress work by the trapezoidal rule (first half): an energy measure valid for every material.
+            p.work[q] += 0.5 * p.V[q] * contract(p.sigma[q], de);
         }
     }
     auto timer = timers_.time("material");
-    Particles& p = particles_;
-    // Stress work by the trapezoidal rule: an energy measure valid for every material.
-    for (std::size_t q = 0; q < p.size(); ++q) p.work[q] += 0.5 * p.V[q] * contract(p.sigma[q], p.dEps[q]);
-    for (const auto& block : blocks_) materials_[block.material]->updateStress(p, block, dt);
-    for (std::size_t q = 0; q < p.size(); ++q) p.work[q] += 0.5 * p.V[q] * contract(p.sigma[q], p.dEps[q]);
+    const auto nChunks = static_cast<long>(chunks_.size());
+#pragma omp parallel for schedule(dynamic, 1) if (static_cast<long>(p.size()) >= minParallelWork())
+    for (long c = 0; c < nChunks; ++c) {
+        const ParticleBlock& chunk = chunks_[c];
+        materials_[chunk.material]->updateStress(p, chunk, dt);
+        for (std::size_t q = chunk.begin; q < chunk.end; ++q) p.work[q] += 0.5 * p.V[q] * contract(p.sigma[q], p.dEps[q]);
+    }
 }
 
 void MpmSolver::gridToParticles(double dt)
@@ -383,8 +467,11 @@ void MpmSolver::gridToParticles(double dt)
     auto timer = timers_.time("gridToParticles");
     Particles& p = particles_;
     const int stride = weights_.stride;
-    bool finite = true;
-    for (std::size_t q = 0; q < p.size(); ++q) {
+    const auto nParticles = static_cast<long>(p.size());
+    long firstBad = nParticles;
+#pragma omp parallel for schedule(static) reduction(min : firstBad) if (nParticles >= minParallelWork())
+    for (long q = 0; q < nParticles; ++q) {
+        if (driverOf(q)) continue;  // moved below
         Vector2 vNew = Vector2::Zero(), a = Vector2::Zero();
         const std::size_t k0 = q * stride;
         // With a contact pass each body moves with its own corrected field (seed G.4 steps 3-4).
@@ -398,21 +485,19 @@ void MpmSolver::gridToParticles(double dt)
             vNew += N * velocity[n];
             a += N * accel[n];
         }
-        if (const RigidBodyDriver* body = driverOf(q)) {
-            p.x[q] = body->move(time_, dt, p.x[q]);
-            p.v[q] = body->velocity(time_ + dt, p.x[q]);
-            continue;
-        }
         p.x[q] += dt * vNew;  // eq. 2.4.7
         p.v[q] += dt * a;     // eq. 2.4.8 (FLIP)
-        finite = finite && std::isfinite(p.v[q].x() + p.v[q].y());
+        if (!std::isfinite(p.v[q].x() + p.v[q].y())) firstBad = std::min(firstBad, q);
     }
-    if (!finite) {
-        for (std::size_t q = 0; q < p.size(); ++q)
-            if (!std::isfinite(p.v[q].x() + p.v[q].y()))
-                throw RunError("particle " + std::to_string(p.id[q]) + " (material " +
-                               materials_[p.material[q]]->name() +
-                               ") has a non-finite velocity: the step is unstable");
+    for (std::size_t q : rigidParticles_) {  // drivers cache their motion: serial
+        const RigidBodyDriver* body = driverOf(q);
+        p.x[q] = body->move(time_, dt, p.x[q]);
+        p.v[q] = body->velocity(time_ + dt, p.x[q]);
+    }
+    if (firstBad < nParticles) {
+        const auto q = static_cast<std::size_t>(firstBad);
+        throw RunError("particle " + std::to_string(p.id[q]) + " (material " + materials_[p.material[q]]->name() +
+                       ") has a non-finite velocity: the step is unstable");
     }
 }
 
@@ -436,22 +521,30 @@ void MpmSolver::remapVelocity(double dt)
     auto timer = timers_.time("particlesToGrid");
     const Particles& p = particles_;
     const int stride = weights_.stride;
-    for (int n : grid_.active) grid_.momentum[n].setZero();
-    if (contact_)
-        for (int b = 0; b < contact_->nBodies(); ++b)
-            for (int n : grid_.active) contact_->field(b).momentum[n].setZero();
-    for (std::size_t q = 0; q < p.size(); ++q) {
+    const auto nActive = static_cast<long>(grid_.active.size());
+#pragma omp parallel for schedule(static) if (nActive >= minParallelWork())
+    for (long k = 0; k < nActive; ++k) {
+        const int n = grid_.active[k];
+        grid_.momentum[n].setZero();
+        if (contact_)
+            for (int b = 0; b < contact_->nBodies(); ++b) contact_->field(b).momentum[n].setZero();
+    }
+    strips_.forEach([&](std::size_t q) {
         const std::size_t k0 = q * stride;
         BodyField* body = contact_ ? &contact_->field(p.body[q]) : nullptr;
         for (int a = 0; a < stride; ++a) {
             const int n = weights_.node[k0 + a];
-            if (n >= 0) grid_.momentum[n] += (weights_.N[k0 + a] * p.m[q]) * p.v[q];
-            if (n >= 0 && body) body->momentum[n] += (weights_.N[k0 + a] * p.m[q]) * p.v[q];
+            if (n < 0) continue;
+            const Vector2 momentum = (weights_.N[k0 + a] * p.m[q]) * p.v[q];
+            grid_.momentum[n] += momentum;
+            if (body) body->momentum[n] += momentum;
         }
+    });
+#pragma omp parallel for schedule(static) if (nActive >= minParallelWork())
+    for (long k = 0; k < nActive; ++k) {
+        const int n = grid_.active[k];
+        grid_.velocity[n] = grid_.mass[n] > 0.0 ? Vector2(grid_.momentum[n] / grid_.mass[n]) : Vector2::Zero();
     }
-    for (int n : grid_.active)
-        grid_.velocity[n] = grid_.mass[n] > 0.0 ? Vector2(grid_.momentum[n] / grid_.mass[n])
-                                                         : Vector2::Zero();
     if (drivesRigidNodes()) constrainRigidNodes(time_ + dt);
     applyBoundaries(grid_.velocity);
     if (contact_) bodyVelocities(time_ + dt);
@@ -460,7 +553,9 @@ void MpmSolver::remapVelocity(double dt)
 double MpmSolver::maxParticleSpeed() const
 {
     double vmax = 0;
-    for (const auto& v : particles_.v) vmax = std::max(vmax, v.norm());
+    const auto n = static_cast<long>(particles_.size());
+#pragma omp parallel for schedule(static) reduction(max : vmax) if (n >= minParallelWork())
+    for (long q = 0; q < n; ++q) vmax = std::max(vmax, particles_.v[q].norm());
     return vmax;
 }
 
@@ -484,6 +579,49 @@ double MpmSolver::bytesPerParticle() const
                                 weights_.dN.capacity() * sizeof(Vector2);
     const std::size_t loads = particleForce_.capacity() * sizeof(Vector2);
     return double(particles_.bytes() + weights + loads) / double(particles_.size());
+}
+
+bool MpmSolver::leftThroughOpening(const Vector2& x) const
+{
+    const Vector2 low = grid_.origin(), high = grid_.upper();
+    // The cell a particle leaves through moves freely where one of its nodes on the side is
+    // open: the stretch of the opening widens by a cell on each side.
+    const auto open = [&](GridSide side) {
+        const BoundaryCondition& bc = *boundaries_[static_cast<int>(side)];
+        const double s = bc.along(x);
+        const double h = side == GridSide::left || side == GridSide::right ? grid_.cellSize().y() : grid_.cellSize().x();
+        return bc.isOpen(s) || bc.isOpen(s - h) || bc.isOpen(s + h);
+    };
+    return (x.x() < low.x() && open(GridSide::left)) || (x.x() > high.x() && open(GridSide::right)) ||
+           (x.y() < low.y() && open(GridSide::bottom)) || (x.y() > high.y() && open(GridSide::top));
+}
+
+std::size_t MpmSolver::removeOutflow()
+{
+    if (!hasOutlet_) return 0;
+    Particles& p = particles_;
+    const auto n = static_cast<long>(p.size());
+    long leaving = 0;
+#pragma omp parallel for schedule(static) reduction(+ : leaving) if (n >= minParallelWork())
+    for (long q = 0; q < n; ++q)
+        leaving += !grid_.contains(p.x[q]) && !driverOf(q) && leftThroughOpening(p.x[q]);
+    if (leaving == 0) return 0;
+    // Keep the others in their order (blocks stay contiguous); tell the loads.
+    std::vector<std::size_t> kept, newIndex(p.size(), ParticleLoad::removedParticle);
+    kept.reserve(p.size() - static_cast<std::size_t>(leaving));
+    for (std::size_t q = 0; q < p.size(); ++q) {
+        if (!grid_.contains(p.x[q]) && !driverOf(q) && leftThroughOpening(p.x[q])) {
+            removedMass_ += p.m[q];
+            continue;
+        }
+        newIndex[q] = kept.size();
+        kept.push_back(q);
+    }
+    p.reorder(kept);
+    for (auto& load : loads_) load->renumber(newIndex);
+    if (!particleForce_.empty()) particleForce_.resize(p.size());
+    reindex();
+    return static_cast<std::size_t>(leaving);
 }
 
 } // namespace gpic

@@ -2,6 +2,7 @@
 
 #include "core/Plugins.H"
 #include "core/Info.H"
+#include "core/Threads.H"
 #include "core/error.H"
 #include "io/GridVtk.H"
 #include "io/ParticlesVtk.H"
@@ -21,6 +22,22 @@ namespace gpic {
 namespace fs = std::filesystem;
 
 namespace {
+//- Peak resident memory of the process (VmHWM) [MiB]; 0 where /proc is not there.
+double peakMemoryMiB()
+{
+    std::ifstream status("/proc/self/status");
+    std::string key;
+    while (status >> key) {
+        if (key == "VmHWM:") {
+            double kB = 0;
+            status >> kB;
+            return kB / 1024.0;
+        }
+        status.ignore(1 << 20, '\n');
+    }
+    return 0.0;
+}
+
 std::string exact(double v)
 {
     char buf[32];
@@ -88,6 +105,8 @@ Simulation::Simulation(const RunOptions& options)
     if (fs::exists(fs::path(dir) / "system/mpmSchemes")) schemes = readCaseFile(dir, "system/mpmSchemes");
     const std::string schemeName = schemes.getOrDefault<std::string>("updateScheme", "USL");
     const std::string shapeName = schemes.getOrDefault<std::string>("shapeFunction", "bilinear");
+    sortInterval_ = schemes.getOrDefault<long>("sortInterval", 100);
+    if (sortInterval_ < 0) schemes.fail("sortInterval", "sortInterval must be >= 0 (0: never sort)");
     scheme_ = Registry<UpdateScheme>::select(schemeName, schemes, schemes, "updateScheme");
     auto shape = Registry<ShapeFunction>::select(shapeName, schemes, schemes, "shapeFunction");
 
@@ -129,6 +148,9 @@ Simulation::Simulation(const RunOptions& options)
     why << "cell size " << solver_->grid().minCellSize() << " m / (wave speed " << solver_->maxWaveSpeed()
         << " m/s + particle speed " << solver_->maxParticleSpeed() << " m/s)";
     timeControl_->checkStable(solver_->criticalTimeStep(), why.str());
+    guard_ = std::make_unique<StabilityGuard>(controlDict_, *solver_, bodyNames, readGravity(dir),
+                                              fs::exists(fs::path(dir) / "constant/loads"));
+    onDisk_ = {time_, step_, startName};
 
     // Every keyword has been read by now: what is left is a typo or a leftover.
     controlDict_.warnUnused();
@@ -149,22 +171,30 @@ Simulation::~Simulation() = default;
 
 std::ostream& Simulation::log() const { return info(); }
 
+void Simulation::writeState(const Particles& particles, double time, long step, double deltaT,
+                            const std::string& name)
+{
+    // The grid holds the current step's fields: written only with the current state.
+    const bool withGrid = writeGrid_ && &particles == &solver_->particles();
+    writeTimeDirectoryAtomically(options_.caseDir, name, [&](const std::string& tmp) {
+        writeParticles(tmp + "/particles.vtp", particles, time, context_.materialNames, context_.bodyNames);
+        if (withGrid) writeGrid(tmp + "/grid.vti", solver_->grid(), time);
+        fs::create_directories(tmp + "/uniform");
+        std::ofstream t(tmp + "/uniform/time");
+        t << "FoamFile { version 2.0; format ascii; class dictionary; object time; }\n"
+          << "value   " << exact(time) << ";\nname    \"" << name << "\";\nindex   " << step
+          << ";\ndeltaT  " << exact(deltaT) << ";\n";
+        if (!t) throw RunError("cannot write " + tmp + "/uniform/time");
+    });
+}
+
 void Simulation::write()
 {
     auto timer = solver_->timers().time("output");
     const std::string name = timeName(time_, timeControl_->timePrecision());
     const std::string& dir = options_.caseDir;
-    writeTimeDirectoryAtomically(dir, name, [&](const std::string& tmp) {
-        writeParticles(tmp + "/particles.vtp", solver_->particles(), time_, context_.materialNames,
-                       context_.bodyNames);
-        if (writeGrid_) writeGrid(tmp + "/grid.vti", solver_->grid(), time_);
-        fs::create_directories(tmp + "/uniform");
-        std::ofstream t(tmp + "/uniform/time");
-        t << "FoamFile { version 2.0; format ascii; class dictionary; object time; }\n"
-          << "value   " << exact(time_) << ";\nname    \"" << name << "\";\nindex   " << step_
-          << ";\ndeltaT  " << exact(deltaT_) << ";\n";
-        if (!t) throw RunError("cannot write " + tmp + "/uniform/time");
-    });
+    writeState(solver_->particles(), time_, step_, deltaT_, name);
+    onDisk_ = {time_, step_, name};
     PvdCollection pvd(pvdPath(dir));
     pvd.add(time_, name + "/particles.vtp", 0);
     if (writeGrid_) pvd.add(time_, name + "/grid.vti", 1);
@@ -177,6 +207,39 @@ void Simulation::write()
         written_.pop_front();
     }
     pvd.write();
+}
+
+void Simulation::stop(const std::optional<StabilityTrip>& trip, const std::string& solverMessage)
+{
+    std::ostringstream where;
+    try {
+        if (trip && trip->stateIsGood) {
+            if (onDisk_.step != step_) write();
+        } else if (const GoodState& good = guard_->lastGood(); good.step > onDisk_.step) {
+            // A time that rounds to the name of the start or of a write of this run (another
+            // state) gets more digits: the guard never replaces a directory.
+            const auto taken = [&](const std::string& n) {
+                if (n == context_.startTimeName) return true;
+                for (const auto& w : written_)
+                    if (w.second == n) return true;
+                return false;
+            };
+            std::string name = timeName(good.time, timeControl_->timePrecision());
+            for (int digits = timeControl_->timePrecision() + 1; taken(name) && digits <= 17; ++digits)
+                name = timeName(good.time, digits);
+            if (taken(name)) throw RunError("time " + name + " has a directory already");
+            writeState(good.particles, good.time, good.step, good.deltaT, name);
+            PvdCollection pvd(pvdPath(options_.caseDir));
+            pvd.add(good.time, name + "/particles.vtp", 0);
+            pvd.write();
+            onDisk_ = {good.time, good.step, name};
+        }
+        where << "; last good state: time " << onDisk_.time << " s (step " << onDisk_.step << ") in "
+              << (fs::path(options_.caseDir) / onDisk_.name).string();
+    } catch (const std::exception& e) {
+        where << "; the last good state could not be written: " << e.what();
+    }
+    throw RunError((trip ? trip->message : solverMessage) + where.str());
 }
 
 long Simulation::run()
@@ -194,20 +257,33 @@ long Simulation::run()
         pvd.write();
     }
     for (auto& f : functions_) f->start(*solver_, time_);
+    guard_->start(time_, step_);
     bool writtenLast = true;
     while (!timeControl_->finished(time_)) {
         try {
             solver_->setTime(time_);
             deltaT_ = timeControl_->deltaT(time_, solver_->criticalTimeStep());
+            // At fixed step indices, so that a restart sorts exactly as the straight run.
+            if (sortInterval_ > 0 && step_ % sortInterval_ == 0) solver_->sortParticles();
             scheme_->advance(*solver_, deltaT_);
             solver_->advanceRigidBodies(deltaT_);
+            solver_->removeOutflow();  // particles gone through an opening (silo outlet)
         } catch (const RunError& e) {
-            throw RunError(std::string(e.what()) + " (step " + std::to_string(step_ + 1) +
-                           " from t = " + exact(time_) + " s)");
+            // The particle to blame, where the guard finds one in what the solver left.
+            stop(guard_->diagnose(time_, step_ + 1, deltaT_),
+                 std::string(e.what()) + " (step " + std::to_string(step_ + 1) + " from t = " + exact(time_) + " s)");
         }
         const double tPrevious = time_;
         time_ += deltaT_;
         ++step_;
+        {
+            std::optional<StabilityTrip> trip;
+            {
+                auto timer = solver_->timers().time("stabilityGuard");
+                trip = guard_->check(time_, step_, deltaT_);
+            }
+            if (trip) stop(trip, "");
+        }
         {
             auto timer = solver_->timers().time("functionObjects");
             for (auto& f : functions_) f->execute(*solver_, time_, step_);
@@ -231,7 +307,15 @@ long Simulation::run()
     log() << "End: t = " << time_ << ", " << steps << " steps, " << solver_->particles().size()
           << " particles, wall " << wall << " s, "
           << (wall > 0 ? double(steps) * solver_->particles().size() / wall : 0.0)
-          << " particle-updates/s\n";
+          << " particle-updates/s, threads " << threadCount() << ", peak memory " << peakMemoryMiB()
+          << " MiB, " << solver_->bytesPerParticle() << " B/particle\n";
+    log() << "Stability guard: ";
+    if (guard_->energyChecked())
+        log() << "created energy at most " << 100 * guard_->largestEnergyGain() << " % of the budget (stops at "
+              << 100 * guard_->maxEnergyGain() << " %), ";
+    log() << guard_->snapshots() << " copies of the last good state, "
+          << (guard_->snapshots() > 0 ? 1e3 * guard_->snapshotSeconds() / guard_->snapshots() : 0.0)
+          << " ms each\n";
     solver_->timers().print(log());
     return steps;
 }

@@ -1,0 +1,345 @@
+#include "solver/StabilityGuard.H"
+
+#include "dictionary/Dictionary.H"
+#include "solver/MpmSolver.H"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <functional>
+#include <sstream>
+
+namespace gpic {
+
+namespace {
+std::string str(const Vector2& v)
+{
+    std::ostringstream os;
+    os << "(" << v.x() << " " << v.y() << ")";
+    return os.str();
+}
+
+bool finite(const Vector2& v) { return std::isfinite(v.x()) && std::isfinite(v.y()); }
+
+//- Fewer particles (or nodes) than this are checked on one thread.
+constexpr long long parallelFrom = 20000;
+} // namespace
+
+StabilityGuard::StabilityGuard(const Dictionary& controlDict, const MpmSolver& solver,
+                               std::vector<std::string> bodyNames, const Vector2& gravity, bool hasLoads)
+    : solver_(solver), bodyNames_(std::move(bodyNames)), gravity_(gravity), hasLoads_(hasLoads)
+{
+    Dictionary none;
+    const Dictionary* found = controlDict.subDictPtr("stabilityGuard");
+    const Dictionary& d = found ? *found : none;
+    snapshotInterval_ = d.found("snapshotInterval")
+                            ? d.getChecked<long>("snapshotInterval", [](const long& n) { return n >= 1; },
+                                                 "snapshotInterval >= 1")
+                            : 100;
+    maxEnergyGain_ = d.found("maxEnergyGain")
+                         ? d.getChecked<double>("maxEnergyGain", [](const double& g) { return g > 0; },
+                                                "maxEnergyGain > 0")
+                         : 1.0;
+    // TimeControl has checked these; the guard needs them for the needed step.
+    adjustTimeStep_ = controlDict.getOrDefault<bool>("adjustTimeStep", false);
+    courant_ = adjustTimeStep_ ? controlDict.getOrDefault<double>("maxCourant", 0.5) : 1.0;
+    fixedDeltaT_ = controlDict.get<double>("deltaT");
+
+    int bodies = static_cast<int>(bodyNames_.size());
+    for (int b : solver_.particles().body) bodies = std::max(bodies, b + 1);
+    rigid_.assign(static_cast<std::size_t>(bodies), 0);
+    for (std::size_t b = 0; b < rigid_.size(); ++b) {
+        rigid_[b] = solver_.rigidBody(static_cast<int>(b)) != nullptr;
+        anyRigid_ = anyRigid_ || rigid_[b];
+    }
+}
+
+bool StabilityGuard::isRigid(std::size_t q) const
+{
+    const int b = solver_.particles().body[q];
+    return anyRigid_ && b >= 0 && b < static_cast<int>(rigid_.size()) && rigid_[b];
+}
+
+StabilityGuard::Survey StabilityGuard::survey() const
+{
+    const Particles& p = solver_.particles();
+    const std::size_t n = p.size();
+    const Vector2 lo = solver_.grid().origin(), hi = solver_.grid().upper();
+    const Vector2 g = gravity_;
+    // Rigid particles (driven) carry no energy of the material.
+    const char* rigidBody = anyRigid_ ? rigid_.data() : nullptr;
+    const int bodies = static_cast<int>(rigid_.size());
+    std::size_t invalid = n, outside = n;
+    double kinetic = 0, work = 0, gravity = 0, speed2 = 0;
+    const long long count = static_cast<long long>(n);
+    // Threads only where they pay: a parallel region costs microseconds.
+#pragma omp parallel for if (count > parallelFrom) schedule(static) reduction(min : invalid, outside) \
+    reduction(+ : kinetic, work, gravity) reduction(max : speed2)
+    for (long long i = 0; i < count; ++i) {
+        const auto q = static_cast<std::size_t>(i);
+        const Vector2& x = p.x[q];
+        const Vector2& v = p.v[q];
+        // One sum is finite only when every term is.
+        const double all = x.x() + x.y() + v.x() + v.y() + p.sigma[q].sum() + p.V[q];
+        if (!std::isfinite(all) || !(p.V[q] > 0.0)) invalid = std::min(invalid, q);
+        // The test of Grid::contains, so that the guard fails where computeWeights would. The
+        // solver has removed the particles that left through an outlet by now.
+        if (x.x() < lo.x() || x.x() > hi.x() || x.y() < lo.y() || x.y() > hi.y()) outside = std::min(outside, q);
+        const double v2 = v.squaredNorm();
+        speed2 = std::max(speed2, v2);
+        if (!rigidBody || p.body[q] >= bodies || !rigidBody[p.body[q]]) {
+            kinetic += 0.5 * p.m[q] * v2;
+            work += p.work[q];
+            gravity += p.m[q] * g.dot(x);  // differences only: the work of gravity
+        }
+    }
+    Survey s;
+    s.invalid = invalid;
+    s.outside = outside;
+    s.kinetic = kinetic;
+    s.work = work;
+    s.gravity = gravity;
+    s.speed2 = speed2;
+    return s;
+}
+
+double StabilityGuard::loadWork(double dt) const
+{
+    if (!hasLoads_) return 0.0;
+    // The loads are the external nodal force less the weight m_i g; their power on the nodal
+    // velocity at mid-step, v_i^{t+1} - dt a_i / 2.
+    const Grid& grid = solver_.grid();
+    const Vector2 g = gravity_;
+    const long long count = static_cast<long long>(grid.active.size());
+    double w = 0;
+#pragma omp parallel for if (count > parallelFrom) schedule(static) reduction(+ : w)
+    for (long long k = 0; k < count; ++k) {
+        const auto n = static_cast<std::size_t>(grid.active[static_cast<std::size_t>(k)]);
+        const Vector2 load = grid.fExt[n] - grid.mass[n] * g;
+        w += load.dot(grid.velocity[n] - 0.5 * dt * grid.accel[n]);
+    }
+    return dt * w;
+}
+
+double StabilityGuard::rigidWork(double t, double dt) const
+{
+    if (!anyRigid_) return 0.0;
+    const auto& loads = solver_.rigidBodyLoads();
+    double w = 0;
+    const double tMid = t - 0.5 * dt;
+    for (std::size_t b = 0; b < rigid_.size() && b < loads.size(); ++b) {
+        const RigidBodyDriver* driver = solver_.rigidBody(static_cast<int>(b));
+        if (!rigid_[b] || !driver) continue;
+        // A rigid motion is v(x) = v(0) + omega e_z x x: the body's power against the
+        // material's load (force, moment about the origin) is F.v(0) + M omega.
+        const Vector2 v0 = driver->velocity(tMid, Vector2::Zero());
+        const double omega = driver->velocity(tMid, Vector2::UnitX()).y() - v0.y();
+        w -= loads[b].force.dot(v0) + loads[b].moment * omega;  // the body's work on the material
+    }
+    return dt * w;
+}
+
+void StabilityGuard::start(double t, long step)
+{
+    const Survey s = survey();
+    kinetic0_ = s.kinetic;
+    work0_ = s.work;
+    gravity0_ = gravityPrevious_ = s.gravity;
+    externalWork_ = 0;
+    createdBefore_ = created_ = 0;
+    particleCount_ = solver_.particles().size();
+    // Elastic energy held at the start (an initial or restarted stress): sum V |sigma|^2 /
+    // (2 rho c^2), rho c^2 the P-wave modulus; a scale, not an exact value.
+    const Particles& p = solver_.particles();
+    std::vector<double> compliance;
+    for (const auto& m : solver_.materials()) {
+        const double c = m->waveSpeed();
+        compliance.push_back(c > 0 && m->rho() > 0 ? 1.0 / (2.0 * m->rho() * c * c) : 0.0);
+    }
+    const double cMax = solver_.maxWaveSpeed();
+    double elastic = 0, mass = 0;
+    for (std::size_t q = 0; q < p.size(); ++q) {
+        if (isRigid(q)) continue;
+        const SymTensor& s2 = p.sigma[q];
+        const double norm2 = s2[XX] * s2[XX] + s2[YY] * s2[YY] + s2[ZZ] * s2[ZZ] + 2 * s2[XY] * s2[XY];
+        if (std::isfinite(norm2)) elastic += p.V[q] * norm2 * compliance[static_cast<std::size_t>(p.material[q])];
+        mass += p.m[q];
+    }
+    // A floor for a scene that starts at rest, unstressed and weightless: motion of a
+    // millionth of the wave speed.
+    const double floor = 0.5 * mass * (1e-6 * cMax) * (1e-6 * cMax);
+    budget_ = s.kinetic + elastic + floor;
+    // Rigid bodies alone: no material energy to account, only round-off in the bodies' loads.
+    energyChecked_ = mass > 0;
+    keep(t, step, 0.0);
+}
+
+void StabilityGuard::restartEnergyAccount() { restartPending_ = true; }
+
+void StabilityGuard::keep(double t, long step, double dt)
+{
+    const auto begin = std::chrono::steady_clock::now();
+    lastGood_.particles = solver_.particles();  // reuses the arrays' storage after the first copy
+    lastGood_.time = t;
+    lastGood_.step = step;
+    lastGood_.deltaT = dt;
+    ++snapshots_;
+    snapshotSeconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+}
+
+std::optional<StabilityTrip> StabilityGuard::check(double t, long step, double dt)
+{
+    const Survey s = survey();
+    const std::size_t n = solver_.particles().size();
+    // The limit the next step would meet: exactly MpmSolver::criticalTimeStep().
+    const double h = solver_.grid().minCellSize(), c = solver_.maxWaveSpeed(), vMax = std::sqrt(s.speed2);
+    const double limit = h / (c + vMax);
+    const bool aboveLimit = !adjustTimeStep_ && fixedDeltaT_ > limit;
+    const auto limitText = [&] {
+        std::ostringstream os;
+        os << "the fixed deltaT " << fixedDeltaT_ << " s is above the stability limit " << limit << " s = cell " << h
+           << " m / (wave speed " << c << " + speed " << vMax << ") m/s; use deltaT <= " << limit
+           << " s or adjustTimeStep yes";
+        return os.str();
+    };
+    // A state that fails on its own is named first; a step above the limit is worth a note.
+    const auto note = [&] { return aboveLimit ? "; also, " + limitText() : std::string(); };
+    if (s.invalid < n) return StabilityTrip{describeInvalid(s.invalid, t, step, dt) + note(), false};
+    if (s.outside < n) return StabilityTrip{describeOutside(s.outside, t, step, dt) + note(), false};
+
+    // Energy account.
+    if (n != particleCount_ || restartPending_) {
+        // Particles left or came (outflow, inflow): their energy is no work done. Start the
+        // account again from here, keeping what the steps created so far and the budget.
+        createdBefore_ = created_;
+        kinetic0_ = s.kinetic;
+        work0_ = s.work;
+        gravity0_ = gravityPrevious_ = s.gravity;
+        externalWork_ = 0;
+        particleCount_ = n;
+        restartPending_ = false;
+    } else {
+        const double external = loadWork(dt) + rigidWork(t, dt);
+        externalWork_ += external;
+        budget_ += std::abs(s.gravity - gravityPrevious_) + std::abs(external);
+        gravityPrevious_ = s.gravity;
+    }
+    const double created = createdBefore_ + (s.kinetic - kinetic0_) + (s.work - work0_) - (s.gravity - gravity0_) -
+                           externalWork_;
+    created_ = created;
+    const double gain = created / budget_;
+    if (energyChecked_) largestGain_ = std::max(largestGain_, gain);
+    if (energyChecked_ && !(gain <= maxEnergyGain_)) {
+        // Blame the particle with the most kinetic energy.
+        const Particles& p = solver_.particles();
+        std::size_t worst = 0;
+        double most = -1;
+        for (std::size_t q = 0; q < n; ++q) {
+            const double k = isRigid(q) ? -1.0 : p.m[q] * p.v[q].squaredNorm();
+            if (k > most) most = k, worst = q;
+        }
+        std::ostringstream what;
+        what << "energy created by the steps: " << created << " J/m, " << gain
+             << " times the energy budget " << budget_ << " J/m (maxEnergyGain " << maxEnergyGain_
+             << "; kinetic energy " << s.kinetic << " J/m, was " << kinetic0_
+             << "), the time step is unstable";
+        return StabilityTrip{describe(what.str(), worst, t, step, dt) + note(), false};
+    }
+
+    if (aboveLimit) {
+        // Blame the fastest particle: its speed set the limit.
+        const Particles& p = solver_.particles();
+        std::size_t fastest = 0;
+        for (std::size_t q = 0; q < n; ++q)
+            if (p.v[q].squaredNorm() == s.speed2) {
+                fastest = q;
+                break;
+            }
+        return StabilityTrip{describe(limitText(), fastest, t, step, dt), true};
+    }
+
+    if (step - lastGood_.step >= snapshotInterval_) keep(t, step, dt);
+    return std::nullopt;
+}
+
+std::optional<StabilityTrip> StabilityGuard::diagnose(double t, long step, double dt) const
+{
+    const Survey s = survey();
+    const std::size_t n = solver_.particles().size();
+    if (s.invalid < n) return StabilityTrip{describeInvalid(s.invalid, t, step, dt), false};
+    if (s.outside < n) return StabilityTrip{describeOutside(s.outside, t, step, dt), false};
+    return std::nullopt;
+}
+
+double StabilityGuard::neededStep(std::size_t q, const Vector2& v) const
+{
+    const Particles& p = solver_.particles();
+    const double c = isRigid(q) ? 0.0 : solver_.materials()[static_cast<std::size_t>(p.material[q])]->waveSpeed();
+    return courant_ * solver_.grid().minCellSize() / (c + v.norm());
+}
+
+std::string StabilityGuard::describe(const std::string& what, std::size_t q, double t, long step, double dt) const
+{
+    const Particles& p = solver_.particles();
+    const int b = p.body[q];
+    const std::string body = b >= 0 && b < static_cast<int>(bodyNames_.size()) ? bodyNames_[b] : std::to_string(b);
+    const auto& material = *solver_.materials()[static_cast<std::size_t>(p.material[q])];
+    // A non-finite velocity says nothing of the speed: use the particle's last good one.
+    Vector2 v = p.v[q];
+    std::string speedNote;
+    if (!finite(v)) {
+        const Particles& good = lastGood_.particles;
+        const auto at = std::find(good.id.begin(), good.id.end(), p.id[q]);
+        if (at != good.id.end()) {
+            v = good.v[static_cast<std::size_t>(at - good.id.begin())];
+            speedNote = " at its last good speed";
+        }
+    }
+    const double c = isRigid(q) ? 0.0 : material.waveSpeed();
+    std::ostringstream os;
+    os << what << " at time " << t << " s (step " << step << "): particle " << p.id[q] << " of body '" << body
+       << "' (material '" << material.name() << "') at " << str(p.x[q]) << " m, velocity " << str(p.v[q])
+       << " m/s; it would need deltaT <= " << neededStep(q, v) << " s" << speedNote << " (Courant " << courant_
+       << " x cell " << solver_.grid().minCellSize() << " m / (wave speed " << c << " + speed " << v.norm()
+       << ") m/s), the step was " << dt << " s";
+    return os.str();
+}
+
+std::string StabilityGuard::describeInvalid(std::size_t first, double t, long step, double dt) const
+{
+    // Blame the source: a non-finite stress spreads to the velocities and positions of its
+    // neighbours within a step, so look for the first of each kind in that order.
+    const Particles& p = solver_.particles();
+    const std::pair<const char*, std::function<bool(std::size_t)>> kinds[] = {
+        {"non-finite stress", [&](std::size_t q) { return !p.sigma[q].allFinite(); }},
+        {"non-finite volume", [&](std::size_t q) { return !std::isfinite(p.V[q]); }},
+        {"non-finite velocity", [&](std::size_t q) { return !finite(p.v[q]); }},
+        {"non-finite position", [&](std::size_t q) { return !finite(p.x[q]); }},
+    };
+    for (const auto& [what, is] : kinds)
+        for (std::size_t q = 0; q < p.size(); ++q)
+            if (is(q)) return describe(what, q, t, step, dt);
+    std::ostringstream what;
+    what << "volume " << p.V[first] << " m^2 <= 0 (the particle turned inside out)";
+    return describe(what.str(), first, t, step, dt);
+}
+
+std::string StabilityGuard::describeOutside(std::size_t q, double t, long step, double dt) const
+{
+    const Grid& grid = solver_.grid();
+    const Vector2& x = solver_.particles().x[q];
+    std::string sides;
+    const auto add = [&](bool beyond, GridSide side) {
+        if (beyond) sides += (sides.empty() ? "" : " and ") + gridSideNames()[static_cast<int>(side)];
+    };
+    add(x.x() < grid.origin().x(), GridSide::left);
+    add(x.x() > grid.upper().x(), GridSide::right);
+    add(x.y() < grid.origin().y(), GridSide::bottom);
+    add(x.y() > grid.upper().y(), GridSide::top);
+    std::ostringstream what;
+    what << "particle outside the grid " << str(grid.origin()) << " - " << str(grid.upper()) << ", beyond its "
+         << sides << " side, where no outflow removes it";
+    return describe(what.str(), q, t, step, dt);
+}
+
+} // namespace gpic
