@@ -4,7 +4,7 @@
 // garbage.
 //
 // The scene: a free elastic steel-density block, 0.2 m square, vibrating in its first
-// free-free axial mode v = v0 + A cos(pi (x - a) / L) (A = c / 1000) and flying right at v0 in
+// free-free axial mode v = v0 + A cos(pi (x - xa) / L) (A = c / 1000) and flying right at v0 in
 // a 1 m grid whose right side is free (no outflow). The time step is automatic.
 #include "core/error.H"
 #include "io/ParticlesVtk.H"
