@@ -601,16 +601,16 @@ std::size_t MpmSolver::removeOutflow()
     if (!hasOutlet_) return 0;
     Particles& p = particles_;
     const auto n = static_cast<long>(p.size());
+    const auto leaves = [&](std::size_t q) { return !grid_.contains(p.x[q]) && !driverOf(q) && leftThroughOpening(p.x[q]); };
     long leaving = 0;
 #pragma omp parallel for schedule(static) reduction(+ : leaving) if (n >= minParallelWork())
-    for (long q = 0; q < n; ++q)
-        leaving += !grid_.contains(p.x[q]) && !driverOf(q) && leftThroughOpening(p.x[q]);
+    for (long q = 0; q < n; ++q) leaving += leaves(static_cast<std::size_t>(q));
     if (leaving == 0) return 0;
     // Keep the others in their order (blocks stay contiguous); tell the loads.
     std::vector<std::size_t> kept, newIndex(p.size(), ParticleLoad::removedParticle);
     kept.reserve(p.size() - static_cast<std::size_t>(leaving));
     for (std::size_t q = 0; q < p.size(); ++q) {
-        if (!grid_.contains(p.x[q]) && !driverOf(q) && leftThroughOpening(p.x[q])) {
+        if (leaves(q)) {
             removedMass_ += p.m[q];
             continue;
         }
