@@ -150,6 +150,7 @@ void MohrCoulomb::updateStress(Particles& p, const ParticleBlock& block, double)
     auto& epsPt = p.history("epsPt");
     const PreparedPlanes fixed = return_.prepare(planes(0, 0));
     PreparedPlanes varying;
+    unsigned activeSet = 0;  // the previous particle's return region, tried first
     for (std::size_t i = block.begin; i < block.end; ++i) {
         SymTensor& s = p.sigma[i];
         rotateJaumann(s, p.dOmega[i]);
@@ -158,7 +159,7 @@ void MohrCoulomb::updateStress(Particles& p, const ParticleBlock& block, double)
         const PrincipalStresses principal(s);  // eq. H.5.26 - H.5.33
         // Properties at the start of the step: hardening lags one step (seed H.5.3).
         if (!constant_) varying = return_.prepare(planes(epsPs[i], epsPt[i]));
-        const PrincipalReturnResult r = return_(principal.values(), constant_ ? fixed : varying);
+        const PrincipalReturnResult r = return_(principal.values(), constant_ ? fixed : varying, &activeSet);
         if (!r.plastic()) {
             state[i] = code(YieldState::elastic);
             continue;

@@ -10,18 +10,30 @@ namespace gpic {
 
 namespace {
 
-//- Active sets of one to three planes as bit masks, smaller sets first.
-const std::vector<unsigned>& activeSets()
+//- A candidate active set: its planes as a bit mask and as indices.
+struct ActiveSet {
+    unsigned mask = 0;
+    int m = 0;
+    int idx[3] = {0, 0, 0};
+};
+
+ActiveSet activeSet(unsigned mask)
 {
-    static const std::vector<unsigned> sets = [] {
-        std::vector<unsigned> s;
-        for (int size = 1; size <= 3; ++size)
-            for (unsigned mask = 1; mask < (1u << YieldPlanes::capacity); ++mask)
-                if (__builtin_popcount(mask) == size) s.push_back(mask);
-        return s;
-    }();
-    return sets;
+    ActiveSet set;
+    set.mask = mask;
+    for (int i = 0; i < YieldPlanes::capacity; ++i)
+        if (mask & (1u << i)) set.idx[set.m++] = i;
+    return set;
 }
+
+//- Active sets of one to three planes, smaller sets first (built once, at load time).
+const std::vector<ActiveSet> activeSets = [] {
+    std::vector<ActiveSet> s;
+    for (int size = 1; size <= 3; ++size)
+        for (unsigned mask = 1; mask < (1u << YieldPlanes::capacity); ++mask)
+            if (__builtin_popcount(mask) == size) s.push_back(activeSet(mask));
+    return s;
+}();
 
 //- Solve the m x m system (m <= 3) A x = r by Cramer's rule; false when (near) singular.
 bool solveSmall(int m, const double A[3][3], const double r[3], double x[3])
@@ -82,7 +94,8 @@ PreparedPlanes PrincipalReturn::prepare(const YieldPlanes& planes) const
 }
 
 PrincipalReturnResult PrincipalReturn::operator()(const Eigen::Vector3d& sigmaI,
-                                                  const PreparedPlanes& prepared) const
+                                                  const PreparedPlanes& prepared,
+                                                  unsigned* activeSetHint) const
 {
     constexpr int N = YieldPlanes::capacity;
     const YieldPlanes& planes = prepared.planes;
@@ -108,23 +121,24 @@ PrincipalReturnResult PrincipalReturn::operator()(const Eigen::Vector3d& sigmaI,
 
     double bestViolation = std::numeric_limits<double>::infinity();
     int bestIdx[3] = {0, 0, 0}, bestM = 0;
+    unsigned bestMask = 0;
     double bestLambda[3] = {0, 0, 0};
-    for (unsigned mask : activeSets()) {
-        if (mask >> n) continue;
-        int idx[3], m = 0;
-        for (int i = 0; i < n; ++i)
-            if (mask & (1u << i)) idx[m++] = i;
-        double A[3][3], r[3], lambda[3];
+    // Returns true when `set` is consistent (the search may stop).
+    const auto trySet = [&](const ActiveSet& set) {
+        if (set.mask >> n) return false;
+        const int m = set.m;
+        const int* idx = set.idx;
+        double A[3][3], r[3] = {0, 0, 0}, lambda[3] = {0, 0, 0};
         for (int i = 0; i < m; ++i) {
             r[i] = fI[idx[i]];
             for (int j = 0; j < m; ++j) A[i][j] = M[idx[i]][idx[j]];
         }
-        if (!solveSmall(m, A, r, lambda)) continue;  // planes meeting in a line or not at all
+        if (!solveSmall(m, A, r, lambda)) return false;  // planes meeting in a line or not at all
 
         // Consistency: multipliers >= 0, all yield values <= 0, principal order kept.
         double violation = 0;
         for (int j = 0; j < m; ++j) violation = std::max(violation, -lambda[j] * DbNorm[idx[j]]);
-        if (violation >= bestViolation) continue;
+        if (violation >= bestViolation) return false;
         for (int i = 0; i < n; ++i) {
             double f = fI[i];
             for (int j = 0; j < m; ++j) f -= M[i][idx[j]] * lambda[j];
@@ -133,17 +147,22 @@ PrincipalReturnResult PrincipalReturn::operator()(const Eigen::Vector3d& sigmaI,
         Eigen::Vector3d sigma = sigmaI;
         for (int j = 0; j < m; ++j) sigma -= lambda[j] * Db[idx[j]];
         violation = std::max({violation, sigma[0] - sigma[1], sigma[1] - sigma[2]});
-        if (!(violation < bestViolation)) continue;
+        if (!(violation < bestViolation)) return false;
 
         bestViolation = violation;
         bestM = m;
+        bestMask = set.mask;
         for (int j = 0; j < m; ++j) {
             bestIdx[j] = idx[j];
             bestLambda[j] = lambda[j];
         }
         result.sigma = sigma;
-        if (bestViolation <= tol) break;
-    }
+        return bestViolation <= tol;
+    };
+    // Neighbouring particles mostly return to the same region: the caller's set first.
+    bool found = activeSetHint && *activeSetHint && trySet(activeSet(*activeSetHint));
+    for (std::size_t s = 0; !found && s < activeSets.size(); ++s) found = trySet(activeSets[s]);
+    if (activeSetHint) *activeSetHint = bestMask;
 
     for (int j = 0; j < bestM; ++j) {
         // Every multiplier goes into the plastic strain, so that sigma = sigma_I - D dEpsP
