@@ -2,6 +2,7 @@
 // wall are removed and their mass counted; elsewhere the wall holds them.
 #include "support/CaseRunner.H"
 
+#include <cmath>
 #include <numeric>
 
 using namespace gpic;
@@ -94,4 +95,51 @@ TEST(Outflow, aReversedOpeningIsAnInputError)
         EXPECT_NE(what.find("opening"), std::string::npos) << what;
         EXPECT_NE(what.find("a < b"), std::string::npos) << what;
     }
+}
+
+TEST(Outflow, massFlowLogsWhatHasFallenOutAtEachTime)
+{
+    // The falling block of the first test with a massFlow function object over the lower
+    // half of the grid, factor 2 (a half model): at every line the mass gone equals the rows
+    // free fall has taken below the outflow side by then, the region holds what lies in it,
+    // and the rate column integrates to the mass gone.
+    ScratchDir scratch("outflow");
+    const fs::path dir = scratch.path() / "case";
+    const double dt = 1e-4, g = 9.81, factor = 2;
+    writeDictionary(dir / "system/controlDict",
+                    "endTime 0.06; deltaT 1e-4; writeControl timeStep; writeInterval 100000;\n"
+                    "functions { silo { type massFlow; writeInterval 50; factor 2; region { min (0 0); max (0.04 0.02); } } }\n");
+    writeDictionary(dir / "system/mpmSchemes", "updateScheme MUSL;\n");
+    writeDictionary(dir / "constant/grid", "origin (0 0); cellSize 0.002; nCells (20 20);\n"
+                                 "boundaries { left { type slip; } right { type slip; } bottom { type outflow; } top { type free; } }\n");
+    writeDictionary(dir / "constant/materials", "block { type linearElastic; rho 1000; E 1e5; nu 0.3; }\n");
+    writeDictionary(dir / "constant/bodies", "block { material block; shape { type rectangle; min (0.01 0.0101); max (0.03 0.0301); } particlesPerCell 2; }\n");
+    writeDictionary(dir / "constant/g", "value (0 -9.81);\n");
+    auto simulation = initialisedSimulation(dir);
+    const Particles initial = simulation->solver().particles();
+    simulation->run();
+    const double removed = simulation->solver().removedMass();
+    simulation.reset();  // closes postProcessing files
+
+    const auto dat = readColumns(dir / "postProcessing/silo/0/massFlow.dat");
+    ASSERT_EQ(dat.at("time").size(), 13u) << "the start and every 50 steps";
+    const double rowMass = factor * initial.m[0] * 20;  // 20 particles per row
+    double integrated = 0;
+    for (std::size_t k = 0; k < dat.at("time").size(); ++k) {
+        const double t = dat.at("time")[k];
+        const long n = std::lround(t / dt);
+        const double drop = g * dt * dt * n * (n + 1) / 2;  // symplectic Euler free fall
+        double gone = 0, inRegion = 0;
+        for (std::size_t q = 0; q < initial.size(); ++q) {
+            const double y = initial.x[q].y() - drop;
+            if (y < 0) gone += factor * initial.m[q];
+            else if (y <= 0.02) inRegion += factor * initial.m[q];
+        }
+        EXPECT_NEAR(dat.at("out")[k], gone, 0.5 * rowMass) << "t = " << t;
+        EXPECT_NEAR(dat.at("mass")[k], inRegion, 0.5 * rowMass) << "t = " << t;
+        if (k > 0) integrated += dat.at("outflowRate")[k] * (t - dat.at("time")[k - 1]);
+    }
+    EXPECT_NEAR(dat.at("out").back(), factor * removed, 1e-9 * factor * removed);
+    EXPECT_NEAR(integrated, factor * removed, 1e-9 * factor * removed);
+    EXPECT_GT(removed, 0.3 * factor * initial.m[0] * initial.size() / factor);
 }

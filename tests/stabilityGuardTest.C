@@ -284,7 +284,9 @@ TEST(StabilityGuard, elasticBlocksFrom1kPaTo200GPaAt0To1000msRunStablyOrStopOuts
         for (double E : {1e3, 1e6, 1e9, 200e9})
             for (double v0 : {0.0, 10.0, 1000.0}) runBlock(E, v0, scheme, scheme == std::string("MUSL"), stayed, stopped);
         EXPECT_EQ(stayed + stopped, 12);
-        if (scheme == std::string("MUSL")) EXPECT_EQ(stopped, 5);  // the five that fly out
+        if (scheme == std::string("MUSL")) {
+            EXPECT_EQ(stopped, 5);  // the five that fly out
+        }
     }
 }
 

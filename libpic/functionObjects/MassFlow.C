@@ -1,0 +1,81 @@
+#include "functionObjects/MassFlow.H"
+
+#include "dictionary/Dictionary.H"
+
+#include <algorithm>
+
+namespace gpic {
+
+GPIC_REGISTER(FunctionObject, MassFlow, "massFlow")
+
+namespace {
+std::string joined(const std::vector<std::string>& names)
+{
+    std::string list;
+    for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
+    return list.empty() ? "(none)" : list;
+}
+} // namespace
+
+MassFlow::MassFlow(const Dictionary& dict, const RunContext& context)
+    : FunctionObject(dict, context),
+      factor_(dict.found("factor") ? dict.getChecked<double>("factor", [](const double& f) { return f > 0; }, "factor > 0")
+                                   : 1.0)
+{
+    if (const Dictionary* region = dict.subDictPtr("region")) {
+        const Vector2 lo = region->get<Vector2>("min"), hi = region->get<Vector2>("max");
+        if (!(hi.x() > lo.x() && hi.y() > lo.y()))
+            region->fail("max", "keyword 'max' in dictionary " + region->name() +
+                                    ": the region needs max > min in x1 and x2");
+        region_ = std::make_pair(lo, hi);
+    }
+    for (const auto& n : dict.getOrDefault<std::vector<std::string>>("bodies", {})) {
+        const auto it = std::find(context.bodyNames.begin(), context.bodyNames.end(), n);
+        if (it == context.bodyNames.end())
+            dict.fail("bodies", "massFlow " + name() + ": '" + n + "' is not a body; valid choices: " +
+                                    joined(context.bodyNames));
+        bodies_.push_back(static_cast<int>(it - context.bodyNames.begin()));
+    }
+}
+
+double MassFlow::massInRegion(const MpmSolver& solver) const
+{
+    const Particles& p = solver.particles();
+    double mass = 0;
+    for (std::size_t q = 0; q < p.size(); ++q) {
+        const bool counted = bodies_.empty() ? solver.rigidBody(p.body[q]) == nullptr
+                                             : std::find(bodies_.begin(), bodies_.end(), p.body[q]) != bodies_.end();
+        if (!counted) continue;
+        if (region_ && (p.x[q].x() < region_->first.x() || p.x[q].y() < region_->first.y() ||
+                        p.x[q].x() > region_->second.x() || p.x[q].y() > region_->second.y()))
+            continue;
+        mass += p.m[q];
+    }
+    return factor_ * mass;
+}
+
+void MassFlow::start(const MpmSolver& solver, double time)
+{
+    std::ofstream& os = file("massFlow.dat");
+    os << "# mass in the region [kg], mass gone through the outlets [kg], outflow rate [kg/s], "
+          "drain rate of the region [kg/s]; masses per metre of thickness times factor "
+       << factor_ << "\n# time mass out outflowRate drainRate\n";
+    lastTime_ = time;
+    lastRemoved_ = factor_ * solver.removedMass();
+    lastMass_ = massInRegion(solver);
+    os << time << ' ' << lastMass_ << ' ' << lastRemoved_ << " 0 0\n";
+}
+
+void MassFlow::write(const MpmSolver& solver, double time)
+{
+    const double mass = massInRegion(solver), removed = factor_ * solver.removedMass();
+    const double dt = time - lastTime_;
+    const double outflow = dt > 0 ? (removed - lastRemoved_) / dt : 0.0;
+    const double drain = dt > 0 ? (lastMass_ - mass) / dt : 0.0;
+    file("massFlow.dat") << time << ' ' << mass << ' ' << removed << ' ' << outflow << ' ' << drain << '\n';
+    lastTime_ = time;
+    lastRemoved_ = removed;
+    lastMass_ = mass;
+}
+
+} // namespace gpic
