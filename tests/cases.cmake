@@ -30,6 +30,12 @@ foreach(tutorial "verification/elasticBar;bar.png;error.png"
   set_tests_properties(${name} PROPERTIES TIMEOUT 600 LABELS integration)
 endforeach()
 
+# The validation report generator (tutorials/Allvalidate) on two quick tutorials.
+add_test(NAME validationReport
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/scripts/validationReport.sh
+                 ${PROJECT_SOURCE_DIR} ${PROJECT_BINARY_DIR})
+set_tests_properties(validationReport PROPERTIES TIMEOUT 600 LABELS integration)
+
 # The benchmark script and its scenes, a few steps each (bench/run -quick).
 add_test(NAME benchQuick
          COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/scripts/benchQuick.sh

@@ -1,0 +1,124 @@
+// picFieldMap: a map of one particle field over the particles' current positions, per time
+// directory, as a PNG (gnuplot) and a CSV: micro-rotation (Cosserat runs), plastic shear
+// strain and yield state (where the material flows; seed figs. 4.39-4.40), displacement,
+// stress components. Writes postProcessing/picFieldMap/<time>/<field>.csv and .png and prints
+// the field's range per time.
+//
+//     picFieldMap -field microRotation                   # the latest time
+//     picFieldMap -field epsPs -time 0.4 -range 0 0.2
+//     picFieldMap -field yieldState -allTimes
+//     picFieldMap -field stress:xy                       # a component (xx xy ... zz, x y z, 0..n-1, mag)
+#include "applicationMain.H"
+
+#include "Gnuplot.H"
+#include "ParticleField.H"
+
+#include "io/TimeDirectories.H"
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+namespace {
+
+using namespace gpic;
+namespace fs = std::filesystem;
+
+//- The field name as a file name ("stress:xy" -> "stress_xy").
+std::string fileStem(std::string field)
+{
+    std::replace(field.begin(), field.end(), ':', '_');
+    return field;
+}
+
+void drawMap(const ParticleField& f, const fs::path& outDir, const po::variables_map& vm)
+{
+    fs::create_directories(outDir);
+    const std::string stem = fileStem(f.name);
+    const fs::path csv = outDir / (stem + ".csv");
+    {
+        std::ofstream out(csv);
+        if (!out) throw InputError(csv.string(), 0, "cannot open for writing");
+        out.precision(10);
+        out << "x1,x2," << f.name << '\n';
+        for (std::size_t q = 0; q < f.x.size(); ++q) out << f.x[q].x() << ',' << f.x[q].y() << ',' << f.value[q] << '\n';
+    }
+    const auto [lo, hi] = std::minmax_element(f.value.begin(), f.value.end());
+    double mean = 0;
+    for (double v : f.value) mean += v;
+    mean /= std::max<std::size_t>(f.value.size(), 1);
+    std::printf("time %-10g %-20s min %-12.5g max %-12.5g mean %-12.5g (%zu particles) -> %s\n", f.time,
+                f.name.c_str(), f.value.empty() ? 0.0 : *lo, f.value.empty() ? 0.0 : *hi, mean, f.value.size(),
+                csv.c_str());
+
+    // Particles as filled squares of their own size: the map reads like the seed's figures.
+    double xmin = 1e300, xmax = -1e300, ymin = 1e300, ymax = -1e300, h = 0;
+    for (std::size_t q = 0; q < f.x.size(); ++q) {
+        xmin = std::min(xmin, f.x[q].x()); xmax = std::max(xmax, f.x[q].x());
+        ymin = std::min(ymin, f.x[q].y()); ymax = std::max(ymax, f.x[q].y());
+        h = std::max(h, f.halfWidth[q]);
+    }
+    if (f.x.empty()) return;
+    const double pad = 2 * h + 1e-12;
+    const double width = xmax - xmin + 2 * pad, height = ymax - ymin + 2 * pad;
+    const int pxWidth = 1000, pxHeight = std::clamp(static_cast<int>(pxWidth * height / width) + 80, 300, 1400);
+    const fs::path png = outDir / (stem + ".png");
+    std::string script = "set terminal pngcairo size " + std::to_string(pxWidth) + "," + std::to_string(pxHeight) +
+                         "\nset output " + gnuplotQuoted(png.string()) + "\nset size ratio -1\n" +
+                         "set xlabel 'x1 [m]'\nset ylabel 'x2 [m]'\nset title " +
+                         gnuplotQuoted(f.name + " at t = " + timeName(f.time, 6) + " s") + " noenhanced\n" +
+                         "set xrange [" + std::to_string(xmin - pad) + ":" + std::to_string(xmax + pad) + "]\n" +
+                         "set yrange [" + std::to_string(ymin - pad) + ":" + std::to_string(ymax + pad) + "]\n" +
+                         "set datafile separator ','\nset key off\n";
+    if (f.name == "yieldState") {
+        // The codes of YieldState: elastic 0, shear 1, tension 2, apex 3, edge 4.
+        script += "set palette maxcolors 5\nset palette defined (0 'grey80', 1 'red', 2 'blue', 3 'black', 4 'orange')\n"
+                  "set cbrange [-0.5:4.5]\nset cbtics ('elastic' 0, 'shear' 1, 'tension' 2, 'apex' 3, 'edge' 4)\n";
+    } else {
+        script += "set palette rgb 33,13,10\n";
+        if (vm.count("range")) {
+            const auto r = vm["range"].as<std::vector<double>>();
+            script += "set cbrange [" + std::to_string(r[0]) + ":" + std::to_string(r[1]) + "]\n";
+        }
+    }
+    // Square markers scaled to the particle size in screen units.
+    const double markerScale = 0.6 * (2 * h / width) * pxWidth / 6.0;
+    script += "plot " + gnuplotQuoted(csv.string()) + " every ::1 using 1:2:3 with points pt 5 ps " +
+              std::to_string(std::max(markerScale, 0.15)) + " lc palette\n";
+    runGnuplot(script, png.string(), csv.string());
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    po::options_description options("picFieldMap options");
+    options.add_options()("field", po::value<std::string>()->required(),
+                          "particle array, or array:component (xx xy yx yy zz, x y z, 0..n-1, mag)")(
+        "time", po::value<double>(), "this time directory (default: the latest)")(
+        "allTimes", "every time directory")(
+        "range", po::value<std::vector<double>>()->multitoken(), "colour range: min max");
+    return applicationMain(
+        argc, argv, "Map of a particle field at its positions: CSV and PNG per time directory.", options,
+        [](const po::variables_map& vm) {
+            const std::string caseDir = vm["case"].as<std::string>();
+            if (vm.count("range")) {
+                const auto r = vm["range"].as<std::vector<double>>();
+                if (r.size() != 2 || !(r[1] > r[0]))
+                    throw InputError("", 0, "-range: expected two numbers min max with max > min");
+            }
+            std::vector<std::string> times;
+            if (vm.count("allTimes"))
+                for (const auto& [t, name] : listTimeDirectories(caseDir)) times.push_back(name);
+            else
+                times.push_back(vm.count("time") ? findTime(caseDir, vm["time"].as<double>()) : latestTime(caseDir));
+            const fs::path out = fs::path(caseDir) / "postProcessing" / "picFieldMap";
+            for (const auto& name : times) {
+                const ParticleField f =
+                    readParticleField((fs::path(caseDir) / name / "particles.vtp").string(), vm["field"].as<std::string>());
+                drawMap(f, out / name, vm);
+            }
+        });
+}

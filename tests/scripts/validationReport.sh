@@ -1,0 +1,28 @@
+#!/bin/bash
+# The validation report generator on two quick tutorials (a copy of tutorials/): it must run
+# their ladders and write a report with the summary, each ladder's table of reference, ours,
+# errors, particles, steps and wall time, and the error-against-wall-time plots.
+# Usage: validationReport.sh <source dir> <binary dir>
+set -euo pipefail
+source_dir=$1 binary_dir=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+export GPIC_DIR=$source_dir
+export PATH=$binary_dir/bin:$PATH
+mkdir -p "$work/tutorials/verification" "$work/tutorials/materials"
+cp "$source_dir/tutorials/Allvalidate" "$work/tutorials/"
+cp -r "$source_dir/tutorials/verification/elasticBar" "$work/tutorials/verification/"
+cp -r "$source_dir/tutorials/materials/oedometerPoint" "$work/tutorials/materials/"
+"$work/tutorials/Allvalidate" -output "$work/report"
+report=$work/report/report.md
+grep -q "^## Summary" "$report" || { echo "no summary"; exit 1; }
+for case in elasticBar-uGIMP elasticBar-bilinear oedometerPoint-associated-psi10; do
+    rows=$(grep -c "^| $case |" "$report" || true)
+    [ "$rows" -ge 3 ] || { echo "expected the summary and ladder rows of $case, found $rows"; exit 1; }
+done
+for png in verification_elasticBar/errorAgainstWallTime.png materials_oedometerPoint/errorAgainstWallTime.png \
+           verification_elasticBar/bar.png; do
+    [ -s "$work/report/$png" ] || { echo "missing $png"; exit 1; }
+    grep -q "($png)" "$report" || { echo "report does not show $png"; exit 1; }
+done
+echo "validation report: $(grep -c '^| ' "$report") table rows"
