@@ -156,7 +156,7 @@ TEST_F(BadInput, anUnknownBoundaryTypeListsTheValidTypes)
     // picInit checks the sides too, so the mistake shows before the particles are made.
     startGood();
     replaceText(grid(), "left    { type free; }", "left    { type fre; }");
-    expectBothReject({"constant/grid:10:", "'fre'", "boundaries/left", "fixed, free, frictionalWall, outflow, slip, symmetry"});
+    expectBothReject({"constant/grid:10:", "'fre'", "boundaries/left", "fixed, free, frictionalWall, guided, outflow, slip, symmetry"});
 }
 
 TEST_F(BadInput, anUnknownUpdateSchemeListsTheValidSchemes)

@@ -20,6 +20,8 @@ foreach(tutorial "verification/elasticBar;bar.png;error.png"
                  "verification/impact;depth.png;error.png"
                  "verification/elasticFooting;stress.png;error.png"
                  "verification/plungerOedometer;force.png;stressPath.png;error.png"
+                 "geotechnics/footingBearing;pressure.png;error.png"
+                 "geotechnics/blade;force.png;depth.png;error.png"
                  "materials/oedometerPoint;oedometer.png")
   list(GET tutorial 0 path)
   list(SUBLIST tutorial 1 -1 plots)

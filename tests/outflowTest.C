@@ -72,7 +72,9 @@ TEST(Outflow, anOpeningInAWallLetsOutOnlyWhatIsAboveIt)
     for (std::size_t q = 0; q < solver.particles().size(); ++q) {
         const Vector2& x = solver.particles().x[q];
         EXPECT_TRUE(solver.grid().contains(x));
-        if (solver.particles().x0[q].x() > 0.08) EXPECT_GT(x.y(), 0.0);
+        if (solver.particles().x0[q].x() > 0.08) {
+            EXPECT_GT(x.y(), 0.0);
+        }
     }
 }
 

@@ -6,6 +6,7 @@
 #include "io/PvdCollection.H"
 #include "io/TimeDirectories.H"
 #include "solver/CaseFiles.H"
+#include "solver/CosseratField.H"
 
 
 namespace gpic {
@@ -19,6 +20,11 @@ InitialiseSummary initialiseCase(const std::string& dir)
     readBoundaries(gridDict);  // only checked here: a bad side type fails now, not in picSolver
     const Dictionary materialsDict = readCaseFile(dir, "constant/materials");
     const auto materials = readMaterials(materialsDict);
+    for (const auto& m : materials)  // a polar scene: the sides' `rotation` keywords, checked here too
+        if (m->needsRotation()) {
+            readRotationSides(gridDict);
+            break;
+        }
     const Dictionary bodiesDict = readCaseFile(dir, "constant/bodies");
     const auto filled = fillBodies(bodiesDict, grid, materials, readGravity(dir));
     gridDict.warnUnused();

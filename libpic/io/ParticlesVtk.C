@@ -138,7 +138,10 @@ void writeParticles(const std::string& path, const Particles& p, double time,
     pd->AddArray(scalarArray("volume", p.V));
     pd->AddArray(scalarArray("work", p.work));
     pd->AddArray(vectorArray("halfSize", p.halfSize, 2));
-    pd->AddArray(tensorArray("stress", p.sigma));
+    auto stress = tensorArray("stress", p.sigma);
+    if (p.polar.enabled())  // a Cosserat stress is not symmetric: yx holds sigma21
+        for (std::size_t i = 0; i < n; ++i) stress->SetComponent(static_cast<vtkIdType>(i), 3, p.polar.sigma21[i]);
+    pd->AddArray(stress);
     pd->AddArray(tensorArray("strain", p.eps));
     pd->AddArray(tensorArray("plasticStrain", p.epsP));
 
@@ -156,6 +159,12 @@ void writeParticles(const std::string& path, const Particles& p, double time,
     pd->AddArray(vonMises);
     for (const auto& name : p.historyNames())
         pd->AddArray(scalarArray(name.c_str(), p.history(name)));
+    if (p.polar.enabled()) {  // Cosserat state (CosseratParticles.H), only in polar scenes
+        pd->AddArray(scalarArray("microRotation", p.polar.w));
+        pd->AddArray(scalarArray("microRotationRate", p.polar.omega));
+        pd->AddArray(vectorArray("coupleStress", p.polar.mu, 3));
+        pd->AddArray(vectorArray("curvature", p.polar.kappa, 3));
+    }
 
     // "TimeValue" is the field ParaView shows as the dataset time.
     vtkFieldData* fd = poly->GetFieldData();

@@ -10,9 +10,11 @@ namespace detail {
 namespace {
 
 // Arrays written by writeParticles; any other one-component Float64 array is a history variable.
-const std::array<const char*, 15> builtinArrays{
+const std::array<const char*, 19> builtinArrays{
     "id", "body", "material", "velocity", "displacement", "initialPosition", "mass", "volume",
-    "halfSize", "stress", "strain", "plasticStrain", "pressure", "vonMisesStress", "work"};
+    "halfSize", "stress", "strain", "plasticStrain", "pressure", "vonMisesStress", "work",
+    // Cosserat scenes only
+    "microRotation", "microRotationRate", "coupleStress", "curvature"};
 
 } // namespace
 

@@ -127,6 +127,11 @@ void readParticles(const std::string& path, Particles& p, double& time,
     vtkDataArray* stressA = required(pd, "stress", 9, nv, path);
     vtkDataArray* strainA = required(pd, "strain", 9, nv, path);
     vtkDataArray* plasticA = required(pd, "plasticStrain", 9, nv, path);
+    // Cosserat state: all four arrays or none.
+    vtkDataArray* rotationA = pd->GetArray("microRotation") ? required(pd, "microRotation", 1, nv, path) : nullptr;
+    vtkDataArray* rotationRateA = rotationA ? required(pd, "microRotationRate", 1, nv, path) : nullptr;
+    vtkDataArray* coupleA = rotationA ? required(pd, "coupleStress", 3, nv, path) : nullptr;
+    vtkDataArray* curvatureA = rotationA ? required(pd, "curvature", 3, nv, path) : nullptr;
 
     vtkFieldData* fd = poly->GetFieldData();
     vtkDataArray* timeA = fd ? fd->GetArray("TimeValue") : nullptr;
@@ -152,6 +157,14 @@ void readParticles(const std::string& path, Particles& p, double& time,
     readTensors(stressA, result.sigma);
     readTensors(strainA, result.eps);
     readTensors(plasticA, result.epsP);
+    if (rotationA) {
+        result.polar.enable(n);
+        readScalars(rotationA, result.polar.w);
+        readScalars(rotationRateA, result.polar.omega);
+        readVectors(coupleA, result.polar.mu);
+        readVectors(curvatureA, result.polar.kappa);
+        for (std::size_t i = 0; i < n; ++i) result.polar.sigma21[i] = stressA->GetComponent(static_cast<vtkIdType>(i), 3);
+    }
 
     for (int k = 0; k < pd->GetNumberOfArrays(); ++k) {
         vtkDataArray* a = pd->GetArray(k);

@@ -16,6 +16,7 @@ void Particles::resize(std::size_t n)
     work.resize(n, 0.0);
     dEps.resize(n, SymTensor::Zero()); dOmega.resize(n, 0.0);
     for (auto& h : history_) h.resize(n, 0.0);
+    polar.resize(n);
 }
 
 std::size_t Particles::add(const Vector2& position, double mass, double volume,
@@ -85,6 +86,7 @@ void Particles::reorder(const std::vector<std::size_t>& order)
     permute(sigma, order); permute(eps, order); permute(epsP, order); permute(work, order);
     permute(dEps, order); permute(dOmega, order);
     for (auto& h : history_) permute(h, order);
+    polar.reorder(order);
 }
 
 std::vector<ParticleBlock> Particles::blocks() const
@@ -113,7 +115,7 @@ std::size_t Particles::bytes() const
                         held(V) + held(halfSize) + held(sigma) + held(eps) + held(epsP) + held(work) +
                         held(dEps) + held(dOmega);
     for (const auto& h : history_) total += held(h);
-    return total;
+    return total + polar.bytes();
 }
 
 } // namespace gpic

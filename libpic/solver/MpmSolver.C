@@ -47,6 +47,7 @@ MpmSolver::MpmSolver(Grid grid, Particles particles,
     double lightest = 0;
     for (double m : particles_.m) lightest = lightest == 0 ? m : std::min(lightest, m);
     minNodalMass_ = 1e-9 * lightest;
+    setupRotation();  // polar scenes only; a nonpolar one drops any rotation arrays read
 }
 
 void MpmSolver::applyBoundaries(std::vector<Vector2>& field) const
@@ -175,6 +176,7 @@ void MpmSolver::particlesToGrid()
     if (driven) constrainRigidNodes(time_);
     applyBoundaries(grid_.velocity);
     if (contact_) bodyVelocities(time_);
+    if (hasRotation_) rotationToGrid();
 }
 
 void MpmSolver::bodyVelocities(double t)
@@ -295,10 +297,12 @@ void MpmSolver::computeForces()
             if (body) body->force[n] += fInt + fExt;
         }
     });
+    if (hasRotation_) rotationForces();
 }
 
 void MpmSolver::updateGrid(double dt)
 {
+    if (hasRotation_) updateRotation(dt);
     if (contact_) {
         updateBodyFields(dt);
         return;
@@ -452,6 +456,10 @@ void MpmSolver::updateStress(double dt)
             p.work[q] += 0.5 * p.V[q] * contract(p.sigma[q], de);
         }
     }
+    if (hasRotation_) {
+        rotationStrain(dt);
+        addRotationWork();
+    }
     auto timer = timers_.time("material");
     const auto nChunks = static_cast<long>(chunks_.size());
 #pragma omp parallel for schedule(dynamic, 1) if (static_cast<long>(p.size()) >= minParallelWork())
@@ -460,6 +468,7 @@ void MpmSolver::updateStress(double dt)
         materials_[chunk.material]->updateStress(p, chunk, dt);
         for (std::size_t q = chunk.begin; q < chunk.end; ++q) p.work[q] += 0.5 * p.V[q] * contract(p.sigma[q], p.dEps[q]);
     }
+    if (hasRotation_) addRotationWork();
 }
 
 void MpmSolver::gridToParticles(double dt)
@@ -499,6 +508,7 @@ void MpmSolver::gridToParticles(double dt)
         throw RunError("particle " + std::to_string(p.id[q]) + " (material " + materials_[p.material[q]]->name() +
                        ") has a non-finite velocity: the step is unstable");
     }
+    if (hasRotation_) rotationToParticles(dt);
 }
 
 Vector2 MpmSolver::materialForceOnRigidNode(int n, const Vector2& vNew, double dt) const
@@ -548,6 +558,7 @@ void MpmSolver::remapVelocity(double dt)
     if (drivesRigidNodes()) constrainRigidNodes(time_ + dt);
     applyBoundaries(grid_.velocity);
     if (contact_) bodyVelocities(time_ + dt);
+    if (hasRotation_) remapRotation();
 }
 
 double MpmSolver::maxParticleSpeed() const
@@ -561,7 +572,8 @@ double MpmSolver::maxParticleSpeed() const
 
 double MpmSolver::criticalTimeStep() const
 {
-    return grid_.minCellSize() / (maxWaveSpeed() + maxParticleSpeed());
+    const double dt = grid_.minCellSize() / (maxWaveSpeed() + maxParticleSpeed());
+    return hasRotation_ ? std::min(dt, rotationalTimeStep()) : dt;
 }
 
 double MpmSolver::maxWaveSpeed() const

@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <sstream>
 
 namespace gpic {
@@ -80,6 +81,8 @@ Simulation::Simulation(const RunOptions& options)
     for (const auto& lib : options_.libs) Plugins::open(lib);
 
     timeControl_ = std::make_unique<TimeControl>(controlDict_);
+    if (controlDict_.found("stages") && controlDict_.found("damping"))
+        controlDict_.fail("damping", "a run in stages sets the damping per stage: move `damping` into the stages");
     const auto damping = controlDict_.getOrDefault<double>("damping", 0.0);
     if (damping < 0 || damping >= 1) controlDict_.fail("damping", "damping must lie in [0, 1)");
     writeGrid_ = controlDict_.getOrDefault<bool>("writeGrid", false);
@@ -127,10 +130,16 @@ Simulation::Simulation(const RunOptions& options)
     solver_->setGravity(readGravity(dir));
     solver_->setDamping(damping);
     solver_->setTime(time_);
-    if (fs::exists(fs::path(dir) / "constant/rigidBodies"))
-        solver_->setRigidBodies(readRigidBodies(readCaseFile(dir, "constant/rigidBodies"), bodyNames));
-    if (fs::exists(fs::path(dir) / "constant/loads"))
-        solver_->setLoads(readLoads(readCaseFile(dir, "constant/loads")), bodyNames);
+    if (solver_->hasRotation()) solver_->setRotationSides(readRotationSides(gridDict));
+    std::optional<Dictionary> rigidBodiesDict;  // kept for the stages' drivers
+    if (fs::exists(fs::path(dir) / "constant/rigidBodies")) {
+        rigidBodiesDict = readCaseFile(dir, "constant/rigidBodies");
+        const Dictionary& rigidBodies = *rigidBodiesDict;
+        if (solver_->hasRotation()) solver_->setRigidRotation(readRigidRotation(rigidBodies, bodyNames));
+        solver_->setRigidBodies(readRigidBodies(rigidBodies, bodyNames));
+    }
+    hasLoads_ = fs::exists(fs::path(dir) / "constant/loads");
+    if (hasLoads_) solver_->setLoads(readLoads(readCaseFile(dir, "constant/loads")), bodyNames);
     if (fs::exists(fs::path(dir) / "constant/contactProperties")) {
         const Dictionary contactDict = readCaseFile(dir, "constant/contactProperties");
         ContactSettings contact = readContactProperties(
@@ -138,6 +147,37 @@ Simulation::Simulation(const RunOptions& options)
         solver_->setContact(std::move(contact.law), contact.normals, std::move(contact.surfaces),
                             static_cast<int>(bodyNames.size()));
         contactDict.warnUnused();
+    }
+
+    if (const Dictionary* stagesDict = controlDict_.subDictPtr("stages")) {
+        StageSetup setup;
+        setup.bodyNames = bodyNames;
+        setup.gravity = readGravity(dir);
+        setup.rigidBodies = rigidBodiesDict ? &*rigidBodiesDict : nullptr;
+        for (int side = 0; side < 4; ++side)
+            setup.sideHasOpening[side] = solver_->boundary(static_cast<GridSide>(side)).hasOpening();
+        setup.cellHeight = solver_->grid().cellSize().y();
+        setup.gridBottom = solver_->grid().origin().y();
+        stages_ = std::make_unique<StageSequence>(*stagesDict, std::move(setup), dir);
+        if (hasLoads_ && stages_->changesParticles())
+            controlDict_.fail("stages", "the loads of constant/loads hold particle indices: with loads no stage may "
+                                        "wake, put to sleep, fill or dig particles (give every stage all bodies)");
+        // Where the start directory says the run is (no uniform/stage: a fresh start).
+        Particles dormant;
+        const fs::path dormantFile = fs::path(dir) / startName / "dormant.vtp";
+        if (fs::exists(dormantFile)) {
+            double t = 0;
+            std::vector<std::string> stored;
+            readParticles(dormantFile.string(), dormant, t, &stored);
+            remapMaterials(dormant, stored, materialNames(solver_->materials()), startName + "/dormant.vtp");
+        }
+        const fs::path stageFile = fs::path(dir) / startName / "uniform/stage";
+        if (fs::exists(stageFile)) {
+            const Dictionary f = Dictionary::readFile(stageFile.string(), startName + "/uniform/stage");
+            stages_->restore(&f, std::move(dormant));
+        } else {
+            stages_->restore(nullptr, std::move(dormant));
+        }
     }
 
     context_ = RunContext{dir, startName, bodyNames, materialNames(solver_->materials())};
@@ -148,8 +188,7 @@ Simulation::Simulation(const RunOptions& options)
     why << "cell size " << solver_->grid().minCellSize() << " m / (wave speed " << solver_->maxWaveSpeed()
         << " m/s + particle speed " << solver_->maxParticleSpeed() << " m/s)";
     timeControl_->checkStable(solver_->criticalTimeStep(), why.str());
-    guard_ = std::make_unique<StabilityGuard>(controlDict_, *solver_, bodyNames, readGravity(dir),
-                                              fs::exists(fs::path(dir) / "constant/loads"));
+    guard_ = std::make_unique<StabilityGuard>(controlDict_, *solver_, bodyNames, readGravity(dir), hasLoads_);
     onDisk_ = {time_, step_, startName};
 
     // Every keyword has been read by now: what is left is a typo or a leftover.
@@ -171,6 +210,12 @@ Simulation::~Simulation() = default;
 
 std::ostream& Simulation::log() const { return info(); }
 
+void Simulation::restartGuard()
+{
+    guard_ = std::make_unique<StabilityGuard>(controlDict_, *solver_, context_.bodyNames, stages_->gravity(), hasLoads_);
+    guard_->start(time_, step_);
+}
+
 void Simulation::writeState(const Particles& particles, double time, long step, double deltaT,
                             const std::string& name)
 {
@@ -185,6 +230,12 @@ void Simulation::writeState(const Particles& particles, double time, long step, 
           << "value   " << exact(time) << ";\nname    \"" << name << "\";\nindex   " << step
           << ";\ndeltaT  " << exact(deltaT) << ";\n";
         if (!t) throw RunError("cannot write " + tmp + "/uniform/time");
+        if (stages_) {  // where the run is in its stages, and the sleeping particles
+            stages_->writeStageFile(tmp, name);
+            const Particles& dormant = stages_->pool().dormant();
+            if (dormant.size() > 0)
+                writeParticles(tmp + "/dormant.vtp", dormant, time, context_.materialNames, context_.bodyNames);
+        }
     });
 }
 
@@ -256,13 +307,16 @@ long Simulation::run()
         pvd.add(time_, context_.startTimeName + "/particles.vtp", 0);
         pvd.write();
     }
+    if (stages_) stages_->start(*solver_, time_, step_);  // begins a stage, or carries one on
     for (auto& f : functions_) f->start(*solver_, time_);
-    guard_->start(time_, step_);
+    if (stages_) restartGuard();
+    else guard_->start(time_, step_);
     bool writtenLast = true;
-    while (!timeControl_->finished(time_)) {
+    const double noStage = std::numeric_limits<double>::infinity();
+    while (!timeControl_->finished(time_) && !(stages_ && stages_->done())) {
         try {
             solver_->setTime(time_);
-            deltaT_ = timeControl_->deltaT(time_, solver_->criticalTimeStep());
+            deltaT_ = timeControl_->deltaT(time_, solver_->criticalTimeStep(), stages_ ? stages_->landOn() : noStage);
             // At fixed step indices, so that a restart sorts exactly as the straight run.
             if (sortInterval_ > 0 && step_ % sortInterval_ == 0) solver_->sortParticles();
             scheme_->advance(*solver_, deltaT_);
@@ -288,17 +342,34 @@ long Simulation::run()
             auto timer = solver_->timers().time("functionObjects");
             for (auto& f : functions_) f->execute(*solver_, time_, step_);
         }
-        writtenLast = timeControl_->isWriteTime(tPrevious, time_, step_);
+        StageEvent stage = StageEvent::none;
+        if (stages_) {
+            stage = stages_->afterStep(*solver_, time_, step_, deltaT_);
+            if (stage == StageEvent::particlesChanged) guard_->start(time_, step_);
+        }
+        // The end of every stage is written: a restart from it begins the next stage.
+        writtenLast = timeControl_->isWriteTime(tPrevious, time_, step_) || stage == StageEvent::ended;
         if (writtenLast) write();
+        if (stage == StageEvent::ended) {
+            stages_->beginNext(*solver_, time_, step_);
+            restartGuard();
+        }
         const auto now = clock::now();
         if (std::chrono::duration<double>(now - lastProgress).count() >= progressInterval_) {
             lastProgress = now;
             const double wall = std::chrono::duration<double>(now - wallStart).count();
-            const double left = wall * (timeControl_->endTime() - time_) / std::max(time_ - tStart, 1e-300);
             char line[160];
-            std::snprintf(line, sizeof line, "t = %-12.6g step %-9ld dt %-10.3g wall %8.1f s   left ~%8.1f s",
-                          time_, step_, deltaT_, wall, left);
-            log() << line << std::endl;
+            if (timeControl_->hasEndTime()) {
+                const double left = wall * (timeControl_->endTime() - time_) / std::max(time_ - tStart, 1e-300);
+                std::snprintf(line, sizeof line, "t = %-12.6g step %-9ld dt %-10.3g wall %8.1f s   left ~%8.1f s",
+                              time_, step_, deltaT_, wall, left);
+            } else {  // a run in stages without endTime: its end is not known in advance
+                std::snprintf(line, sizeof line, "t = %-12.6g step %-9ld dt %-10.3g wall %8.1f s   |v|max %.3g m/s",
+                              time_, step_, deltaT_, wall, solver_->maxParticleSpeed());
+            }
+            log() << line;
+            if (const Stage* s = stages_ ? stages_->current() : nullptr) log() << "   stage " << s->name();
+            log() << std::endl;
         }
     }
     if (!writtenLast) write();

@@ -25,7 +25,9 @@ TimeControl::TimeControl(const Dictionary& d)
       startFrom_(d.getWordOrDefault("startFrom", {"startTime", "firstTime", "latestTime"},
                                     "latestTime")),
       startTime_(d.getOrDefault<double>("startTime", 0.0)),
-      endTime_(d.get<double>("endTime")),
+      // A run in stages ends with its last stage: endTime is optional there.
+      endTime_(d.found("stages") && !d.found("endTime") ? std::numeric_limits<double>::infinity()
+                                                         : d.get<double>("endTime")),
       deltaT_(d.getChecked<double>("deltaT", positive, "deltaT > 0")),
       adjustTimeStep_(d.getOrDefault<bool>("adjustTimeStep", false)),
       maxCourant_(d.found("maxCourant")
@@ -74,7 +76,7 @@ void TimeControl::checkStable(double dtCritical, const std::string& why) const
                                  " or adjustTimeStep yes");
 }
 
-double TimeControl::deltaT(double t, double dtCritical) const
+double TimeControl::deltaT(double t, double dtCritical, double landOn) const
 {
     double dt;
     if (adjustTimeStep_) {
@@ -90,6 +92,7 @@ double TimeControl::deltaT(double t, double dtCritical) const
         const double nextWrite = (writeIndex(t) + 1) * writeInterval_;
         if (t + dt > nextWrite - 1e-9 * dt) dt = nextWrite - t;
     }
+    if (t + dt > landOn) dt = landOn - t;
     if (t + dt > endTime_) dt = endTime_ - t;
     return dt;
 }

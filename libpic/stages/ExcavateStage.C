@@ -1,0 +1,116 @@
+#include "stages/ExcavateStage.H"
+
+#include "core/Info.H"
+#include "core/error.H"
+#include "dictionary/Dictionary.H"
+#include "solver/MpmSolver.H"
+#include "stages/ParticlePool.H"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <ostream>
+
+namespace gpic {
+
+GPIC_REGISTER(Stage, ExcavateStage, "excavate")
+
+ExcavateStage::ExcavateStage(const Dictionary& dict, const StageSetup& setup) : Stage(dict, setup, 0.8)
+{
+    if (until().kind() != EndCondition::Kind::equilibrium)
+        dict.fail("until", "excavate brings the soil to equilibrium after each layer: until { equilibrium 1e-6; } "
+                           "(optionally maxTime, minSteps), not " + until().kindName());
+    const std::string name = dict.get<std::string>("body");
+    body_ = bodyId(dict, "body", name);
+    if (!isActive(body_)) dict.fail("body", "body '" + name + "' is dug but not among the stage's bodies (" + bodyList() + ")");
+    if (dict.found("region") == dict.found("regions"))
+        dict.fail("region", "excavate needs exactly one of region { type rectangle; min (..); max (..); } and "
+                            "regions { a { ... } b { ... } } in dictionary " + dict.name());
+    if (dict.found("region")) regions_.push_back(Shape::New(dict.subDict("region")));
+    else {
+        const Dictionary& all = dict.subDict("regions");
+        for (const auto& key : all.keys()) {
+            if (!all.isDict(key)) all.fail(key, "'" + key + "' needs a shape sub-dictionary { type rectangle; ... }");
+            regions_.push_back(Shape::New(all.subDict(key)));
+        }
+        if (regions_.empty()) all.fail("", "regions holds no shape");
+    }
+    thickness_ = dict.found("layerThickness")
+                     ? dict.getChecked<double>("layerThickness", [](const double& v) { return v > 0; }, "layerThickness > 0")
+                     : setup.cellHeight;
+}
+
+bool ExcavateStage::inRegion(const Particles& p, std::size_t q) const
+{
+    if (p.body[q] != body_) return false;
+    for (const auto& r : regions_)
+        if (r->inside(p.x[q])) return true;
+    return false;
+}
+
+bool ExcavateStage::digLayer(MpmSolver& solver, ParticlePool& pool, double t, long step)
+{
+    const Particles& p = solver.particles();
+    double highest = -std::numeric_limits<double>::infinity();
+    for (std::size_t q = 0; q < p.size(); ++q)
+        if (inRegion(p, q)) highest = std::max(highest, p.x[q].y());
+    if (highest == -std::numeric_limits<double>::infinity()) return false;
+    // The band of the highest particle left: bands of layerThickness down from the top.
+    band_ = std::max(band_ + 1, static_cast<long>(std::floor((top_ - highest) / thickness_ + 1e-9)));
+    const double bottom = top_ - (band_ + 1) * thickness_;
+    std::size_t count = 0;
+    const double mass = pool.remove(
+        solver, [&](const Particles& s, std::size_t q) { return inRegion(s, q) && s.x[q].y() >= bottom; }, &count);
+    removed_ += mass;
+    ++layers_;
+    until().start(solver, t, step);
+    info() << "Stage " << name() << ": layer " << layers_ << " dug, " << count << " particles (" << mass
+           << " kg/m) above x2 = " << bottom << " m, t = " << t << " s\n";
+    return true;
+}
+
+StageEvent ExcavateStage::started(MpmSolver& solver, ParticlePool& pool, double t, long step)
+{
+    const Particles& p = solver.particles();
+    top_ = -std::numeric_limits<double>::infinity();
+    for (std::size_t q = 0; q < p.size(); ++q)
+        if (inRegion(p, q)) top_ = std::max(top_, p.x[q].y() + p.halfSize[q].y());
+    if (top_ == -std::numeric_limits<double>::infinity()) return end("nothing to dig in the region");
+    if (!digLayer(solver, pool, t, step)) return end("nothing to dig in the region");
+    return StageEvent::particlesChanged;
+}
+
+StageEvent ExcavateStage::afterStep(MpmSolver& solver, ParticlePool& pool, double t, long step, double dt)
+{
+    std::string why;
+    bool timedOut = false;
+    if (!until().reached(solver, t, step, dt, why, timedOut)) return StageEvent::none;
+    if (timedOut) warning(fileName(), line(), "stage " + name() + ", layer " + std::to_string(layers_) + ": " + why);
+    if (digLayer(solver, pool, t, step)) return StageEvent::particlesChanged;
+    return end(why, timedOut);
+}
+
+std::string ExcavateStage::summary() const
+{
+    char mass[32];
+    std::snprintf(mass, sizeof mass, "%.4g", removed_);
+    return " after " + std::to_string(layers_) + (layers_ == 1 ? " layer" : " layers") + " (" + mass + " kg/m dug)";
+}
+
+void ExcavateStage::writeOwnProgress(std::ostream& os) const
+{
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "    top %.17g;\n    removed %.17g;\n", top_, removed_);
+    os << buf << "    band " << band_ << ";\n    layers " << layers_ << ";\n";
+}
+
+void ExcavateStage::readOwnProgress(const Dictionary& progress)
+{
+    top_ = progress.get<double>("top");
+    removed_ = progress.get<double>("removed");
+    band_ = progress.get<long>("band");
+    layers_ = progress.get<long>("layers");
+}
+
+} // namespace gpic

@@ -1,0 +1,127 @@
+#include "stages/GeostaticFillStage.H"
+
+#include "core/Info.H"
+#include "core/error.H"
+#include "dictionary/Dictionary.H"
+#include "solver/MpmSolver.H"
+#include "stages/ParticlePool.H"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <ostream>
+
+namespace gpic {
+
+GPIC_REGISTER(Stage, GeostaticFillStage, "geostaticFill")
+
+GeostaticFillStage::GeostaticFillStage(const Dictionary& dict, const StageSetup& setup)
+    : Stage(dict, setup, 0.8)
+{
+    if (until().kind() != EndCondition::Kind::equilibrium)
+        dict.fail("until", "geostaticFill brings each layer to equilibrium: until { equilibrium 1e-6; } "
+                           "(optionally maxTime, minSteps), not " + until().kindName());
+    const std::size_t nBodies = setup.bodyNames.size();
+    fill_.assign(nBodies, 0);
+    if (dict.found("fill")) {
+        for (const auto& name : dict.get<std::vector<std::string>>("fill")) {
+            const int b = bodyId(dict, "fill", name);
+            if (!isActive(b)) dict.fail("fill", "body '" + name + "' is filled but not among the stage's bodies (" + bodyList() + ")");
+            if (isRigid(b)) dict.fail("fill", "body '" + name + "' has a driver: only deformable bodies are filled");
+            fill_[static_cast<std::size_t>(b)] = 1;
+        }
+    } else {
+        for (std::size_t b = 0; b < nBodies; ++b) fill_[b] = isActive(static_cast<int>(b)) && !isRigid(static_cast<int>(b));
+    }
+    if (std::find(fill_.begin(), fill_.end(), 1) == fill_.end())
+        dict.fail("fill", "geostaticFill has no deformable body to fill among its bodies (" + bodyList() + ")");
+    const auto positive = [](const double& v) { return v > 0; };
+    thickness_ = dict.found("layerThickness")
+                     ? dict.getChecked<double>("layerThickness", positive, "layerThickness > 0")
+                     : setup.cellHeight;
+    upTo_ = dict.getOrDefault<double>("upTo", std::numeric_limits<double>::infinity());
+    // K0 given (eq. 3.3.1; nu/(1-nu) for an elastic mass) or by Jaky (eq. 3.3.3).
+    if (dict.found("K0") == dict.found("phi"))
+        dict.fail("K0", "geostaticFill needs exactly one of K0 and phi (Jaky: K0 = 1 - sin(phi)) in dictionary " +
+                            dict.name());
+    if (dict.found("K0")) K0_ = dict.getChecked<double>("K0", positive, "K0 > 0");
+    else
+        K0_ = 1.0 - std::sin(M_PI / 180.0 * dict.getChecked<double>(
+                                                 "phi", [](const double& p) { return p >= 0 && p < 90; },
+                                                 "0 <= phi < 90 (degrees)"));
+}
+
+bool GeostaticFillStage::addLayer(MpmSolver& solver, ParticlePool& pool, double t, long step)
+{
+    const Particles& sleeping = pool.dormant();
+    const auto waiting = [&](const Particles& p, std::size_t q) { return fills(p.body[q]) && p.x[q].y() < upTo_; };
+    double lowest = std::numeric_limits<double>::infinity();
+    for (std::size_t q = 0; q < sleeping.size(); ++q)
+        if (waiting(sleeping, q)) lowest = std::min(lowest, sleeping.x[q].y());
+    if (!std::isfinite(lowest)) return false;
+    // The band of the lowest waiting particle: bands of layerThickness from the grid's bottom.
+    const double y0 = setup().gridBottom;
+    band_ = std::max(band_ + 1, static_cast<long>(std::floor((lowest - y0) / thickness_ + 1e-9)));
+    const double top = y0 + (band_ + 1) * thickness_;
+    const double g = gravity().norm();
+    double surface = -std::numeric_limits<double>::infinity();
+    std::size_t count = 0;
+    pool.exchange(
+        solver, [](const Particles&, std::size_t) { return false; },
+        [&](const Particles& p, std::size_t q) { return waiting(p, q) && p.x[q].y() < top; },
+        [&](Particles& p, std::size_t begin, std::size_t end) {
+            // The free surface of the new layer: the top of its particles' domains.
+            for (std::size_t q = begin; q < end; ++q) surface = std::max(surface, p.x[q].y() + p.halfSize[q].y());
+            for (std::size_t q = begin; q < end; ++q) {
+                const double rho = solver.materials()[static_cast<std::size_t>(p.material[q])]->rho();
+                const double s22 = -rho * g * std::max(0.0, surface - p.x[q].y());  // eq. 3.3.4
+                p.sigma[q] = SymTensor(K0_ * s22, s22, K0_ * s22, 0.0);
+                p.v[q].setZero();
+                if (p.polar.enabled()) {  // no couple stress, sigma21 = sigma12 (eq. 3.3.4)
+                    p.polar.sigma21[q] = 0.0;
+                    p.polar.mu[q].setZero();
+                    p.polar.omega[q] = 0.0;
+                }
+            }
+            count = end - begin;
+        });
+    ++layers_;
+    until().start(solver, t, step);
+    info() << "Stage " << name() << ": layer " << layers_ << ", " << count << " particles up to x2 = " << surface
+           << " m, t = " << t << " s\n";
+    return true;
+}
+
+StageEvent GeostaticFillStage::started(MpmSolver& solver, ParticlePool& pool, double t, long step)
+{
+    if (!addLayer(solver, pool, t, step)) return end("nothing left to fill");
+    return StageEvent::particlesChanged;
+}
+
+StageEvent GeostaticFillStage::afterStep(MpmSolver& solver, ParticlePool& pool, double t, long step, double dt)
+{
+    std::string why;
+    bool timedOut = false;
+    if (!until().reached(solver, t, step, dt, why, timedOut)) return StageEvent::none;
+    if (timedOut) warning(fileName(), line(), "stage " + name() + ", layer " + std::to_string(layers_) + ": " + why);
+    if (addLayer(solver, pool, t, step)) return StageEvent::particlesChanged;
+    return end(why, timedOut);
+}
+
+std::string GeostaticFillStage::summary() const
+{
+    return " after " + std::to_string(layers_) + (layers_ == 1 ? " layer" : " layers");
+}
+
+void GeostaticFillStage::writeOwnProgress(std::ostream& os) const
+{
+    os << "    band " << band_ << ";\n    layers " << layers_ << ";\n";
+}
+
+void GeostaticFillStage::readOwnProgress(const Dictionary& progress)
+{
+    band_ = progress.get<long>("band");
+    layers_ = progress.get<long>("layers");
+}
+
+} // namespace gpic

@@ -1,0 +1,7 @@
+#include "stages/RunStage.H"
+
+namespace gpic {
+
+GPIC_REGISTER(Stage, RunStage, "run")
+
+} // namespace gpic

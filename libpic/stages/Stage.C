@@ -1,0 +1,164 @@
+#include "stages/Stage.H"
+
+#include "bodies/RigidBodyDriver.H"
+#include "dictionary/Dictionary.H"
+#include "grid/Grid.H"
+#include "solver/MpmSolver.H"
+#include "stages/ParticlePool.H"
+#include "stages/StageTimeDriver.H"
+
+#include <algorithm>
+#include <ostream>
+
+namespace gpic {
+
+namespace {
+std::string lastComponent(const std::string& name)
+{
+    const auto slash = name.rfind('/');
+    return slash == std::string::npos ? name : name.substr(slash + 1);
+}
+
+std::string listOf(const std::vector<std::string>& names)
+{
+    std::string list;
+    for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
+    return list;
+}
+} // namespace
+
+Stage::Stage(const Dictionary& dict, const StageSetup& setup, double defaultDamping, int endBody)
+    : name_(lastComponent(dict.name())),
+      type_(dict.get<std::string>("type")),
+      file_(dict.fileName()),
+      line_(dict.startLine()),
+      setup_(setup),
+      until_(dict, setup.bodyNames, endBody)
+{
+    const std::size_t nBodies = setup.bodyNames.size();
+    damping_ = dict.found("damping") ? dict.getChecked<double>(
+                                           "damping", [](const double& a) { return a >= 0 && a < 1; },
+                                           "0 <= damping < 1 (eq. 3.3.5)")
+                                     : defaultDamping;
+    gravityOn_ = dict.getOrDefault<bool>("gravity", true);
+
+    active_.assign(nBodies, dict.found("bodies") ? 0 : 1);
+    if (dict.found("bodies")) {
+        const auto names = dict.get<std::vector<std::string>>("bodies");
+        if (names.empty()) dict.fail("bodies", "a stage needs at least one body; valid choices: " + listOf(setup.bodyNames));
+        for (const auto& n : names) active_[static_cast<std::size_t>(bodyId(dict, "bodies", n))] = 1;
+    }
+
+    // Drivers: constant/rigidBodies, then the stage's own. Built now, so that a bad driver
+    // stops the run before its first step, not when the stage comes.
+    drivers_.resize(nBodies);
+    const auto addDrivers = [&](const Dictionary& d) {
+        for (const auto& key : d.keys()) {
+            const int b = bodyId(d, key, key);
+            if (!d.isDict(key)) d.fail(key, "'" + key + "' needs a driver sub-dictionary { type ...; }");
+            drivers_[static_cast<std::size_t>(b)] = RigidBodyDriver::New(d.subDict(key));
+        }
+    };
+    if (setup.rigidBodies) addDrivers(*setup.rigidBodies);
+    if (const Dictionary* own = dict.subDictPtr("drivers")) addDrivers(*own);
+    rigid_.assign(nBodies, 0);
+    for (std::size_t b = 0; b < nBodies; ++b) rigid_[b] = drivers_[b] != nullptr;
+
+    if (const Dictionary* open = dict.subDictPtr("openings"))
+        for (const auto& side : open->keys())
+            setOpening(*open, side, side, open->getWord(side, {"open", "closed"}) == "open" ? 1 : 0);
+}
+
+Stage::~Stage() = default;
+
+int Stage::bodyId(const Dictionary& dict, const std::string& keyword, const std::string& name) const
+{
+    const auto& names = setup_.bodyNames;
+    const auto it = std::find(names.begin(), names.end(), name);
+    if (it == names.end())
+        dict.fail(keyword, "'" + name + "' is not a body of the particles; valid choices: " + listOf(names));
+    return static_cast<int>(it - names.begin());
+}
+
+void Stage::setOpening(const Dictionary& dict, const std::string& keyword, const std::string& side, int state)
+{
+    const auto& sides = gridSideNames();
+    const auto it = std::find(sides.begin(), sides.end(), side);
+    std::vector<std::string> withOpening;
+    for (int s = 0; s < 4; ++s)
+        if (setup_.sideHasOpening[s]) withOpening.push_back(sides[s]);
+    if (it == sides.end() || !setup_.sideHasOpening[it - sides.begin()])
+        dict.fail(keyword, "side '" + side + "' has no `opening` in constant/grid; valid choices: " +
+                               (withOpening.empty() ? std::string("(none)") : listOf(withOpening)));
+    openings_[static_cast<std::size_t>(it - sides.begin())] = state;
+}
+
+bool Stage::changesParticles() const
+{
+    return std::find(active_.begin(), active_.end(), 0) != active_.end();
+}
+
+std::string Stage::bodyList() const
+{
+    std::vector<std::string> names;
+    for (std::size_t b = 0; b < active_.size(); ++b)
+        if (active_[b]) names.push_back(setup_.bodyNames[b]);
+    return listOf(names);
+}
+
+void Stage::configure(MpmSolver& solver, double t0)
+{
+    solver.setDamping(damping_);
+    solver.setGravity(gravity());
+    for (int s = 0; s < 4; ++s) {
+        BoundaryCondition& bc = solver.boundary(static_cast<GridSide>(s));
+        if (bc.hasOpening()) bc.setOpen(openings_[s] != 0);
+    }
+    solver.refreshOpenings();
+    std::vector<std::unique_ptr<RigidBodyDriver>> drivers(drivers_.size());
+    for (std::size_t b = 0; b < drivers_.size(); ++b)
+        if (drivers_[b]) drivers[b] = std::make_unique<StageTimeDriver>(std::move(drivers_[b]), t0);
+    solver.setRigidBodies(std::move(drivers));
+}
+
+StageEvent Stage::begin(MpmSolver& solver, ParticlePool& pool, double t, long step)
+{
+    pool.exchange(
+        solver, [&](const Particles& p, std::size_t q) { return !isActive(p.body[q]); },
+        [&](const Particles& p, std::size_t q) { return isActive(p.body[q]) && wakesAtBegin(p, q); });
+    configure(solver, t);
+    until_.start(solver, t, step);
+    return started(solver, pool, t, step);
+}
+
+void Stage::resume(MpmSolver& solver, const Dictionary& progress, double stageStart)
+{
+    configure(solver, stageStart);
+    until_.readProgress(progress.subDict("clock"));
+    readOwnProgress(progress);
+}
+
+StageEvent Stage::afterStep(MpmSolver& solver, ParticlePool&, double t, long step, double dt)
+{
+    std::string why;
+    bool timedOut = false;
+    if (!until_.reached(solver, t, step, dt, why, timedOut)) return StageEvent::none;
+    return end(why, timedOut);
+}
+
+StageEvent Stage::end(const std::string& reason, bool timedOut)
+{
+    reason_ = reason;
+    timedOut_ = timedOut;
+    return StageEvent::ended;
+}
+
+void Stage::writeProgress(std::ostream& os) const
+{
+    os << "    clock\n    {\n";
+    until_.writeProgress(os, "        ");
+    os << "    }\n";
+    writeOwnProgress(os);
+}
+
+} // namespace gpic

@@ -1,0 +1,185 @@
+#include "stages/StageSequence.H"
+
+#include "core/Info.H"
+#include "core/error.H"
+#include "dictionary/Dictionary.H"
+#include "solver/MpmSolver.H"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+namespace gpic {
+
+namespace fs = std::filesystem;
+
+namespace {
+std::string exact(double v)
+{
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.17g", v);
+    return buf;
+}
+
+const char* const header = "# index startTime endTime startStep endStep stage type reason";
+} // namespace
+
+StageSequence::StageSequence(const Dictionary& stagesDict, StageSetup setup, std::string caseDir)
+    : setup_(std::move(setup)), caseDir_(std::move(caseDir))
+{
+    for (const auto& key : stagesDict.keys()) {
+        if (!stagesDict.isDict(key))
+            stagesDict.fail(key, "'" + key + "' is not a stage sub-dictionary { type ...; until { ... } }");
+        stages_.push_back(Stage::New(stagesDict.subDict(key), setup_));
+    }
+    if (stages_.empty()) stagesDict.fail("", "stages holds no stage; valid types: " + Registry<Stage>::validChoices());
+    setup_.rigidBodies = nullptr;  // read by the stages' constructors only; the caller's to keep
+}
+
+bool StageSequence::changesParticles() const
+{
+    for (const auto& s : stages_)
+        if (s->changesParticles()) return true;
+    return false;
+}
+
+void StageSequence::restore(const Dictionary* stageFile, Particles dormant)
+{
+    pool_.dormant() = std::move(dormant);
+    fresh_ = stageFile == nullptr;
+    if (fresh_) return;
+    const Dictionary& f = *stageFile;
+    const long index = f.getChecked<long>("index", [&](const long& i) { return i >= 0 && i <= static_cast<long>(stages_.size()); },
+                                          "0 <= index <= " + std::to_string(stages_.size()) + " (the stages of system/controlDict)");
+    index_ = static_cast<std::size_t>(index);
+    const std::string name = f.get<std::string>("stage");
+    const std::string expected = done() ? "none" : stages_[index_]->name();
+    if (name != expected)
+        f.fail("stage", "the time directory was written in stage '" + name + "' (number " + std::to_string(index + 1) +
+                            "), but stage number " + std::to_string(index + 1) + " of system/controlDict is '" +
+                            expected + "'");
+    begun_ = f.get<bool>("begun");
+    startTime_ = f.get<double>("startTime");
+    startStep_ = f.get<long>("startStep");
+    if (begun_ && done()) f.fail("begun", "no stage is left to carry on");
+    progress_ = f.subDictPtr("progress") ? *f.subDictPtr("progress") : Dictionary();
+}
+
+void StageSequence::logBegin(double t, long step) const
+{
+    const Stage& s = *stages_[index_];
+    info() << "Stage " << s.name() << " (" << s.type() << ") begins at t = " << t << " s, step " << step
+           << ": bodies " << s.bodyList() << ", damping " << s.damping() << "\n";
+}
+
+void StageSequence::start(MpmSolver& solver, double t, long step)
+{
+    // Rows of stages.dat from a run this one replaces (a restart from an earlier time) go.
+    const fs::path dat = fs::path(caseDir_) / "postProcessing/stages.dat";
+    if (fs::exists(dat)) {
+        std::ifstream in(dat);
+        std::ostringstream kept;
+        for (std::string line; std::getline(in, line);) {
+            std::istringstream words(line);
+            long index = 0;
+            double t0 = 0, t1 = 0;
+            if (line.rfind("#", 0) == 0 || !(words >> index >> t0 >> t1) || t1 <= t + 1e-12 * std::abs(t))
+                kept << line << "\n";
+        }
+        in.close();
+        std::ofstream(dat) << kept.str();
+    }
+    if (begun_) {
+        Stage& s = *stages_[index_];
+        s.resume(solver, progress_, startTime_);
+        info() << "Stage " << s.name() << " (" << s.type() << ") carries on at t = " << t << " s, step " << step
+               << " (begun at t = " << startTime_ << " s, step " << startStep_ << ")\n";
+        return;
+    }
+    if (fresh_) {
+        // Everything sleeps until a stage wakes it: a fill starts from an empty box.
+        pool_.exchange(
+            solver, [](const Particles&, std::size_t) { return true; }, [](const Particles&, std::size_t) { return false; });
+        fresh_ = false;
+    }
+    beginNext(solver, t, step);
+}
+
+void StageSequence::beginNext(MpmSolver& solver, double t, long step)
+{
+    while (!done()) {
+        begun_ = true;
+        startTime_ = t;
+        startStep_ = step;
+        logBegin(t, step);
+        if (stages_[index_]->begin(solver, pool_, t, step) != StageEvent::ended) return;
+        afterStep(solver, t, step, 0.0);  // ended at once: log and record it
+    }
+}
+
+StageEvent StageSequence::afterStep(MpmSolver& solver, double t, long step, double dt)
+{
+    if (done()) return StageEvent::none;
+    Stage& s = *stages_[index_];
+    // dt == 0: a stage that ended as it began (beginNext).
+    const StageEvent event = dt > 0 ? s.afterStep(solver, pool_, t, step, dt) : StageEvent::ended;
+    if (event != StageEvent::ended) return event;
+    Record r{s.name(), s.type(), s.reason() + s.summary(), startTime_, t, startStep_, step, s.timedOut()};
+    info() << "Stage " << r.name << " ended: " << r.reason << ", t = " << t << " s, " << step - startStep_
+           << " steps\n";
+    if (r.timedOut) warning(s.fileName(), s.line(), "stage " + r.name + " ended by its maxTime: " + r.reason);
+    appendRow(r);
+    records_.push_back(r);
+    ++index_;
+    begun_ = false;
+    return StageEvent::ended;
+}
+
+void StageSequence::appendRow(const Record& r) const
+{
+    const fs::path dir = fs::path(caseDir_) / "postProcessing";
+    fs::create_directories(dir);
+    const fs::path dat = dir / "stages.dat";
+    const bool fresh = !fs::exists(dat);
+    std::ofstream out(dat, std::ios::app);
+    if (fresh) out << header << "\n";
+    char times[160];
+    std::snprintf(times, sizeof times, "%zu %.12g %.12g %ld %ld", index_, r.startTime, r.endTime, r.startStep,
+                  r.endStep);
+    out << times << " " << r.name << " " << r.type << " \"" << r.reason << "\"\n";
+}
+
+double StageSequence::landOn() const
+{
+    return done() || !begun_ ? std::numeric_limits<double>::infinity() : stages_[index_]->landOn();
+}
+
+Vector2 StageSequence::gravity() const
+{
+    return done() ? setup_.gravity : stages_[index_]->gravity();
+}
+
+void StageSequence::writeStageFile(const std::string& timeDir, const std::string& timeName) const
+{
+    fs::create_directories(fs::path(timeDir) / "uniform");
+    const fs::path file = fs::path(timeDir) / "uniform/stage";
+    std::ofstream os(file);
+    os << "FoamFile { version 2.0; format ascii; class dictionary; location \"" << timeName
+       << "/uniform\"; object stage; }\n"
+       << "index     " << index_ << ";\n"
+       << "stage     " << (done() ? std::string("none") : stages_[index_]->name()) << ";\n"
+       << "begun     " << (begun_ ? "yes" : "no") << ";\n"
+       << "startTime " << exact(startTime_) << ";\n"
+       << "startStep " << startStep_ << ";\n";
+    if (begun_) {
+        os << "progress\n{\n";
+        stages_[index_]->writeProgress(os);
+        os << "}\n";
+    }
+    if (!os) throw RunError("cannot write " + file.string());
+}
+
+} // namespace gpic
