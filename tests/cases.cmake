@@ -22,7 +22,8 @@ foreach(tutorial "verification/elasticBar;bar.png;error.png"
                  "verification/plungerOedometer;force.png;stressPath.png;error.png"
                  "geotechnics/footingBearing;pressure.png;error.png"
                  "geotechnics/blade;force.png;depth.png;error.png"
-                 "materials/oedometerPoint;oedometer.png")
+                 "materials/oedometerPoint;oedometer.png"
+                 "geotechnics/silo;flowRate.png;flowPattern-0.2.png;error.png")
   list(GET tutorial 0 path)
   list(SUBLIST tutorial 1 -1 plots)
   string(REPLACE "/" "_" name "tutorial_${path}")
