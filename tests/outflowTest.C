@@ -12,6 +12,22 @@ namespace {
 
 double sum(const std::vector<double>& a) { return std::accumulate(a.begin(), a.end(), 0.0); }
 
+//- A 20 x 20 mm elastic block falling for 0.06 s (600 steps) through the outflow bottom of a
+//  40 x 40 mm grid; `functions` is added to the controlDict.
+void fallingBlockCase(const fs::path& dir, const std::string& functions)
+{
+    writeDictionary(dir / "system/controlDict",
+                    "endTime 0.06; deltaT 1e-4; writeControl timeStep; writeInterval 100000;\n" + functions);
+    // MUSL: the nodal velocity comes from the particles' momenta, so the node a particle has
+    // just reached (tiny mass) cannot turn round-off into strain (USL's small-mass instability).
+    writeDictionary(dir / "system/mpmSchemes", "updateScheme MUSL;\n");
+    writeDictionary(dir / "constant/grid", "origin (0 0); cellSize 0.002; nCells (20 20);\n"
+                                 "boundaries { left { type slip; } right { type slip; } bottom { type outflow; } top { type free; } }\n");
+    writeDictionary(dir / "constant/materials", "block { type linearElastic; rho 1000; E 1e5; nu 0.3; }\n");
+    writeDictionary(dir / "constant/bodies", "block { material block; shape { type rectangle; min (0.01 0.0101); max (0.03 0.0301); } particlesPerCell 2; }\n");
+    writeDictionary(dir / "constant/g", "value (0 -9.81);\n");
+}
+
 } // namespace
 
 TEST(Outflow, aFallingBlockLeavesRowByRowAsFreeFallPredicts)
@@ -23,15 +39,7 @@ TEST(Outflow, aFallingBlockLeavesRowByRowAsFreeFallPredicts)
     const fs::path dir = scratch.path() / "case";
     const double dt = 1e-4, g = 9.81;
     const long steps = 600;
-    writeDictionary(dir / "system/controlDict", "endTime 0.06; deltaT 1e-4; writeControl timeStep; writeInterval 100000;\n");
-    // MUSL: the nodal velocity comes from the particles' momenta, so the node a particle has
-    // just reached (tiny mass) cannot turn round-off into strain (USL's small-mass instability).
-    writeDictionary(dir / "system/mpmSchemes", "updateScheme MUSL;\n");
-    writeDictionary(dir / "constant/grid", "origin (0 0); cellSize 0.002; nCells (20 20);\n"
-                                 "boundaries { left { type slip; } right { type slip; } bottom { type outflow; } top { type free; } }\n");
-    writeDictionary(dir / "constant/materials", "block { type linearElastic; rho 1000; E 1e5; nu 0.3; }\n");
-    writeDictionary(dir / "constant/bodies", "block { material block; shape { type rectangle; min (0.01 0.0101); max (0.03 0.0301); } particlesPerCell 2; }\n");
-    writeDictionary(dir / "constant/g", "value (0 -9.81);\n");
+    fallingBlockCase(dir, "");
     auto simulation = initialisedSimulation(dir);
     const Particles initial = simulation->solver().particles();
     simulation->run();
@@ -108,15 +116,8 @@ TEST(Outflow, massFlowLogsWhatHasFallenOutAtEachTime)
     ScratchDir scratch("outflow");
     const fs::path dir = scratch.path() / "case";
     const double dt = 1e-4, g = 9.81, factor = 2;
-    writeDictionary(dir / "system/controlDict",
-                    "endTime 0.06; deltaT 1e-4; writeControl timeStep; writeInterval 100000;\n"
-                    "functions { silo { type massFlow; writeInterval 50; factor 2; region { min (0 0); max (0.04 0.02); } } }\n");
-    writeDictionary(dir / "system/mpmSchemes", "updateScheme MUSL;\n");
-    writeDictionary(dir / "constant/grid", "origin (0 0); cellSize 0.002; nCells (20 20);\n"
-                                 "boundaries { left { type slip; } right { type slip; } bottom { type outflow; } top { type free; } }\n");
-    writeDictionary(dir / "constant/materials", "block { type linearElastic; rho 1000; E 1e5; nu 0.3; }\n");
-    writeDictionary(dir / "constant/bodies", "block { material block; shape { type rectangle; min (0.01 0.0101); max (0.03 0.0301); } particlesPerCell 2; }\n");
-    writeDictionary(dir / "constant/g", "value (0 -9.81);\n");
+    fallingBlockCase(dir, "functions { silo { type massFlow; writeInterval 50; factor 2; "
+                          "region { min (0 0); max (0.04 0.02); } } }\n");
     auto simulation = initialisedSimulation(dir);
     const Particles initial = simulation->solver().particles();
     simulation->run();

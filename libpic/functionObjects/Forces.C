@@ -9,15 +9,6 @@ namespace gpic {
 
 GPIC_REGISTER(FunctionObject, Forces, "forces")
 
-namespace {
-std::string joined(const std::vector<std::string>& names)
-{
-    std::string list;
-    for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
-    return list.empty() ? "(none)" : list;
-}
-} // namespace
-
 Forces::Forces(const Dictionary& dict, const RunContext& context)
     : FunctionObject(dict, context),
       names_(dict.getOrDefault<std::vector<std::string>>("bodies", {})),
@@ -28,7 +19,7 @@ Forces::Forces(const Dictionary& dict, const RunContext& context)
     for (const auto& n : names_)
         if (std::find(context.bodyNames.begin(), context.bodyNames.end(), n) == context.bodyNames.end())
             dict.fail("bodies", "forces " + name() + ": '" + n + "' is not a body; valid choices: " +
-                                    joined(context.bodyNames));
+                                    choiceList(context.bodyNames));
 }
 
 void Forces::start(const MpmSolver& solver, double)
@@ -44,7 +35,7 @@ void Forces::start(const MpmSolver& solver, double)
         if (std::find(rigid.begin(), rigid.end(), n) == rigid.end())
             throw InputError(file_, line_, "forces " + name() + ": '" + n +
                                                "' is not a rigid body (constant/rigidBodies); valid choices: " +
-                                               joined(rigid));
+                                               choiceList(rigid));
         bodies_.push_back(static_cast<int>(std::find(all.begin(), all.end(), n) - all.begin()));
     }
     std::ofstream& os = file("forces.dat");

@@ -7,6 +7,13 @@
 
 namespace gpic {
 
+std::string choiceList(const std::vector<std::string>& names)
+{
+    std::string list;
+    for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
+    return list.empty() ? "(none)" : list;
+}
+
 FunctionObject::FunctionObject(const Dictionary& dict, const RunContext& context)
     : name_(dict.name().substr(dict.name().find_last_of('/') + 1)), context_(context),
       writeInterval_(dict.found("writeInterval")

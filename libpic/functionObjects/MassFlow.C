@@ -8,15 +8,6 @@ namespace gpic {
 
 GPIC_REGISTER(FunctionObject, MassFlow, "massFlow")
 
-namespace {
-std::string joined(const std::vector<std::string>& names)
-{
-    std::string list;
-    for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
-    return list.empty() ? "(none)" : list;
-}
-} // namespace
-
 MassFlow::MassFlow(const Dictionary& dict, const RunContext& context)
     : FunctionObject(dict, context),
       factor_(dict.found("factor") ? dict.getChecked<double>("factor", [](const double& f) { return f > 0; }, "factor > 0")
@@ -33,7 +24,7 @@ MassFlow::MassFlow(const Dictionary& dict, const RunContext& context)
         const auto it = std::find(context.bodyNames.begin(), context.bodyNames.end(), n);
         if (it == context.bodyNames.end())
             dict.fail("bodies", "massFlow " + name() + ": '" + n + "' is not a body; valid choices: " +
-                                    joined(context.bodyNames));
+                                    choiceList(context.bodyNames));
         bodies_.push_back(static_cast<int>(it - context.bodyNames.begin()));
     }
 }
