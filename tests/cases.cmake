@@ -22,6 +22,7 @@ foreach(tutorial "verification/elasticBar;bar.png;error.png"
                  "verification/plungerOedometer;force.png;stressPath.png;error.png"
                  "geotechnics/footingBearing;pressure.png;error.png"
                  "geotechnics/blade;force.png;depth.png;error.png"
+                 "earthmoving/cornBlade;force.png;error.png"
                  "materials/oedometerPoint;oedometer.png"
                  "geotechnics/silo;flowRate.png;flowPattern-0.2.png;error.png")
   list(GET tutorial 0 path)
