@@ -80,3 +80,25 @@ TEST(FieldMap, anUnknownArrayOrComponentListsTheValidChoices)
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_NE(r.err.find("-range"), std::string::npos) << r.err;
 }
+
+TEST(FreeSurface, theSurfaceOfASlopedFillFollowsItsTopWithinAParticle)
+{
+    // A fill whose top falls linearly from 50 mm at x1 = 0 to 20 mm at x1 = 0.1 m, filled
+    // with particles whose centres lie inside it: each column's surface (the top of its
+    // highest particle) lies within half a particle (2.5 mm, plus the slope over half a
+    // column) of the line.
+    ScratchDir scratch("freeSurface");
+    const fs::path dir = geostaticCase(scratch.path() / "case");
+    writeDictionary(dir / "constant/bodies", "soil { material soil; shape { type polygon; points ((0 0) (0.1 0) (0.1 0.02) (0 0.05)); }\n"
+                                   "       particlesPerCell 2; }\n");
+    ASSERT_EQ(runApplication("picInit", dir).exitCode, 0);
+    const AppResult r = runApplication("picFreeSurface", dir, "-time 0");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const auto rows = readNumbersCsv(dir / "postProcessing/picFreeSurface/surface.csv");
+    ASSERT_EQ(rows.size(), 20u) << "20 columns of one particle width (5 mm)";
+    for (const auto& row : rows) {
+        const double line = 0.05 - 0.3 * row[1];  // the top at the column centre
+        EXPECT_NEAR(row[2], line, 0.0025 + 0.3 * 0.0025 + 1e-12) << "x1 = " << row[1];
+    }
+    EXPECT_GT(fs::file_size(dir / "postProcessing/picFreeSurface/surface.png"), 1000u);
+}
