@@ -8,6 +8,7 @@
 //     picFieldMap -field epsPs -time 0.4 -range 0 0.2
 //     picFieldMap -field yieldState -allTimes
 //     picFieldMap -field stress:xy                       # a component (xx xy ... zz, x y z, 0..n-1, mag)
+//     picFieldMap -field initialPosition:y -bands 10     # coloured layers (seed figs. 6.9-6.11)
 #include "applicationMain.H"
 
 #include "Gnuplot.H"
@@ -78,6 +79,16 @@ void drawMap(const ParticleField& f, const fs::path& outDir, const po::variables
                   "set cbrange [-0.5:4.5]\nset cbtics ('elastic' 0, 'shear' 1, 'tension' 2, 'apex' 3, 'edge' 4)\n";
     } else {
         script += "set palette rgb 33,13,10\n";
+        if (vm.count("bands")) {
+            // Coloured layers (seed figs. 6.9-6.11): N bands of alternating colours, e.g. of
+            // initialPosition:y, so that each initial layer keeps its colour as it deforms.
+            const int bands = vm["bands"].as<int>();
+            script += "set palette maxcolors " + std::to_string(bands) +
+                      "\nset palette defined (0 '#1f77b4', 1 '#ff7f0e', 2 '#2ca02c', 3 '#d62728', 4 '#9467bd', 5 '#8c564b')\n";
+            if (!vm.count("range")) {
+                script += "set cbrange [" + std::to_string(*lo) + ":" + std::to_string(*hi + 1e-12 * std::abs(*hi) + 1e-300) + "]\n";
+            }
+        }
         if (vm.count("range")) {
             const auto r = vm["range"].as<std::vector<double>>();
             script += "set cbrange [" + std::to_string(r[0]) + ":" + std::to_string(r[1]) + "]\n";
@@ -99,11 +110,14 @@ int main(int argc, char** argv)
                           "particle array, or array:component (xx xy yx yy zz, x y z, 0..n-1, mag)")(
         "time", po::value<double>(), "this time directory (default: the latest)")(
         "allTimes", "every time directory")(
-        "range", po::value<std::vector<double>>()->multitoken(), "colour range: min max");
+        "range", po::value<std::vector<double>>()->multitoken(), "colour range: min max")(
+        "bands", po::value<int>(), "colour in N bands (coloured layers: -field initialPosition:y -bands 10)");
     return applicationMain(
         argc, argv, "Map of a particle field at its positions: CSV and PNG per time directory.", options,
         [](const po::variables_map& vm) {
             const std::string caseDir = vm["case"].as<std::string>();
+            if (vm.count("bands") && vm["bands"].as<int>() < 2)
+                throw InputError("", 0, "-bands: expected a number of bands >= 2");
             if (vm.count("range")) {
                 const auto r = vm["range"].as<std::vector<double>>();
                 if (r.size() != 2 || !(r[1] > r[0]))
