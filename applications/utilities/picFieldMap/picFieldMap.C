@@ -13,6 +13,7 @@
 
 #include "Gnuplot.H"
 #include "ParticleField.H"
+#include "TimeSelection.H"
 
 #include "io/TimeDirectories.H"
 
@@ -106,10 +107,9 @@ void drawMap(const ParticleField& f, const fs::path& outDir, const po::variables
 int main(int argc, char** argv)
 {
     po::options_description options("picFieldMap options");
+    addTimeOptions(options);
     options.add_options()("field", po::value<std::string>()->required(),
                           "particle array, or array:component (xx xy yx yy zz, x y z, 0..n-1, mag)")(
-        "time", po::value<double>(), "this time directory (default: the latest)")(
-        "allTimes", "every time directory")(
         "range", po::value<std::vector<double>>()->multitoken(), "colour range: min max")(
         "bands", po::value<int>(), "colour in N bands (coloured layers: -field initialPosition:y -bands 10)");
     return applicationMain(
@@ -123,11 +123,7 @@ int main(int argc, char** argv)
                 if (r.size() != 2 || !(r[1] > r[0]))
                     throw InputError("", 0, "-range: expected two numbers min max with max > min");
             }
-            std::vector<std::string> times;
-            if (vm.count("allTimes"))
-                for (const auto& [t, name] : listTimeDirectories(caseDir)) times.push_back(name);
-            else
-                times.push_back(vm.count("time") ? findTime(caseDir, vm["time"].as<double>()) : latestTime(caseDir));
+            const std::vector<std::string> times = selectedTimes(vm, caseDir);
             const fs::path out = fs::path(caseDir) / "postProcessing" / "picFieldMap";
             for (const auto& name : times) {
                 const ParticleField f =

@@ -11,6 +11,7 @@
 
 #include "Gnuplot.H"
 #include "ParticleField.H"
+#include "TimeSelection.H"
 
 #include "io/TimeDirectories.H"
 
@@ -20,7 +21,6 @@
 #include <fstream>
 #include <iostream>
 #include <map>
-#include <sstream>
 
 namespace {
 
@@ -54,32 +54,14 @@ Surface freeSurface(const std::string& vtp, const std::vector<int>& bodies, doub
 int main(int argc, char** argv)
 {
     po::options_description options("picFreeSurface options");
-    options.add_options()("time", po::value<double>(), "this time directory (default: the latest)")(
-        "times", po::value<std::string>(), "these time directories, e.g. \"0 4 8\"")(
-        "allTimes", "every time directory")(
-        "bodies", po::value<std::vector<int>>()->multitoken(), "body ids to include (default: all)")(
+    addTimeOptions(options);
+    options.add_options()("bodies", po::value<std::vector<int>>()->multitoken(), "body ids to include (default: all)")(
         "width", po::value<double>(), "column width [m] (default: the largest particle width)");
     return applicationMain(
         argc, argv, "Free surface of the material per time directory: CSV and PNG.", options,
         [](const po::variables_map& vm) {
             const std::string caseDir = vm["case"].as<std::string>();
-            std::vector<std::string> times;
-            if (vm.count("allTimes")) {
-                for (const auto& [t, name] : listTimeDirectories(caseDir)) times.push_back(name);
-            } else if (vm.count("times")) {
-                std::istringstream words(vm["times"].as<std::string>());
-                for (std::string w; words >> w;) {
-                    double t = 0;
-                    try {
-                        t = std::stod(w);
-                    } catch (const std::exception&) {
-                        throw InputError("", 0, "-times: '" + w + "' is not a number");
-                    }
-                    times.push_back(findTime(caseDir, t));
-                }
-            } else {
-                times.push_back(vm.count("time") ? findTime(caseDir, vm["time"].as<double>()) : latestTime(caseDir));
-            }
+            const std::vector<std::string> times = selectedTimes(vm, caseDir);
             const std::vector<int> bodies = vm.count("bodies") ? vm["bodies"].as<std::vector<int>>() : std::vector<int>{};
             double width = vm.count("width") ? vm["width"].as<double>() : 0.0;
             if (vm.count("width") && !(width > 0)) throw InputError("", 0, "-width: expected a length > 0");
