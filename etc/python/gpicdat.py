@@ -51,3 +51,44 @@ def read_particles(path):
         arrays[attr['Name']] = list(values) if n == 1 else \
             [values[k:k + n] for k in range(0, len(values), n)]
     return arrays
+
+
+def option(argv, name, count, default):
+    """The `count` numbers after `name` on a command line, or `default` when it is absent."""
+    if name not in argv:
+        return default
+    k = argv.index(name)
+    return [float(v) for v in argv[k + 1:k + 1 + count]]
+
+
+def tool_forces(case, body):
+    """(time, Fx, Fy, dx) of `body` from every postProcessing/forces/<start>/forces.dat of a
+    case, in time order: the force of the material on the tool and the tool's travel. A
+    restart adds a directory; its lines replace the earlier run's from its start on."""
+    import glob
+    import os
+    files = sorted(glob.glob(os.path.join(case, 'postProcessing', 'forces', '*', 'forces.dat')),
+                   key=lambda p: float(os.path.basename(os.path.dirname(p))))
+    t, fx, fy, dx = [], [], [], []
+    for path in files:
+        c = read_columns(path)
+        start = c['time'][0] if c['time'] else float('inf')
+        while t and t[-1] >= start:
+            for column in (t, fx, fy, dx):
+                column.pop()
+        t += c['time']
+        fx += c[body + ':Fx']
+        fy += c[body + ':Fy']
+        dx += c[body + ':dx']
+    return t, fx, fy, dx
+
+
+def window_mean(t, f, keep):
+    """Trapezoidal time average of f over the consecutive samples where keep is true; None
+    when no two consecutive samples are kept."""
+    area = span = 0.0
+    for k in range(1, len(t)):
+        if keep[k - 1] and keep[k]:
+            area += 0.5 * (f[k - 1] + f[k]) * (t[k] - t[k - 1])
+            span += t[k] - t[k - 1]
+    return area / span if span > 0 else None

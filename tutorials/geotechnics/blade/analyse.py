@@ -20,21 +20,18 @@ the end of the window reached [mm] (less than d1 when a run stopped early).
 -series writes series.dat in the case: blade travel [mm], F_x1, F_x2 [N/m], and both forces
 scaled to the nominal depth by (h_nominal / h)^2, the scaling of Sokolovski's solution.
 """
-import glob
 import os
 import re
 import subprocess
 import sys
 
 sys.path.insert(0, os.path.join(os.environ.get('GPIC_DIR', '../../..'), 'etc', 'python'))
-from gpicdat import read_columns, read_particles  # noqa: E402
+import gpicdat  # noqa: E402
+from gpicdat import read_particles, tool_forces, window_mean  # noqa: E402
 
 
 def option(name, count, default):
-    if name not in sys.argv:
-        return default
-    k = sys.argv.index(name)
-    return [float(v) for v in sys.argv[k + 1:k + 1 + count]]
+    return gpicdat.option(sys.argv, name, count, default)
 
 
 def entries(path, name):
@@ -64,32 +61,16 @@ def sokolovski(h, case):
 
 
 def mean(t, f, keep):
-    """Trapezoidal time average of f over the consecutive samples where keep is true."""
-    area = span = 0.0
-    for k in range(1, len(t)):
-        if keep[k - 1] and keep[k]:
-            area += 0.5 * (f[k - 1] + f[k]) * (t[k] - t[k - 1])
-            span += t[k] - t[k - 1]
-    if span <= 0:
+    value = window_mean(t, f, keep)
+    if value is None:
         sys.exit('analyse.py: no forces in the averaging window (is the run complete?)')
-    return area / span
+    return value
 
 
 case = sys.argv[1]
 d0, d1 = option('-window', 2, [0.010, 0.035])
-files = sorted(glob.glob(os.path.join(case, 'postProcessing', 'forces', '*', 'forces.dat')),
-               key=lambda p: float(os.path.basename(os.path.dirname(p))))
-t, fx1, fx2, travel = [], [], [], []
-for path in files:   # restarts add a directory each; a later start replaces the overlap
-    c = read_columns(path)
-    start = c['time'][0] if c['time'] else float('inf')
-    while t and t[-1] >= start:
-        for column in (t, fx1, fx2, travel):
-            column.pop()
-    t += c['time']
-    fx1 += [-f for f in c['blade:Fx']]
-    fx2 += [-f for f in c['blade:Fy']]
-    travel += c['blade:dx']
+t, fx1, fx2, travel = tool_forces(case, 'blade')
+fx1, fx2 = [-f for f in fx1], [-f for f in fx2]  # the force of the blade on the material
 h = depth(case)
 keep = [d0 - 1e-9 <= d <= d1 + 1e-9 for d in travel]
 F1, F2 = mean(t, fx1, keep), mean(t, fx2, keep)
