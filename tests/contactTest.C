@@ -127,6 +127,23 @@ TEST(RigidSurface, normalsOfCircleRectangleAndARotatedBody)
     EXPECT_NEAR((box.outwardNormal(top) - R * Vector2(0, 1)).norm(), 0, 1e-14);
 }
 
+// A rigid body drives only the nodes it covers or faces: a node beyond a corner (the one
+// level with a blade's foot, ahead of it) would drag the soil below the foot along.
+TEST(RigidSurface, facesTheNodesInsideAndInFrontOfAFaceButNotBeyondACorner)
+{
+    using gpic::Dictionary;
+    gpic::RigidSurface blade(Dictionary::parse("type rectangle; min (0.3 0.2); max (0.32 0.45);", "constant/bodies"));
+    EXPECT_TRUE(blade.facesNode(Vector2(0.31, 0.3)));    // inside
+    EXPECT_TRUE(blade.facesNode(Vector2(0.32, 0.3)));    // on the front face
+    EXPECT_TRUE(blade.facesNode(Vector2(0.32, 0.2)));    // on the foot's corner
+    EXPECT_TRUE(blade.facesNode(Vector2(0.33, 0.3)));    // in front of the front face
+    EXPECT_TRUE(blade.facesNode(Vector2(0.31, 0.19)));   // below the foot
+    EXPECT_FALSE(blade.facesNode(Vector2(0.33, 0.2)));   // level with the foot, ahead of it
+    EXPECT_FALSE(blade.facesNode(Vector2(0.33, 0.19)));  // below and ahead
+    gpic::RigidSurface disk(Dictionary::parse("type circle; centre (1 1); radius 0.5;", "constant/bodies"));
+    EXPECT_TRUE(disk.facesNode(Vector2(1.6, 1.6)));     // no corners
+}
+
 // Seed 4.4 with the contact model, mu = 0.1: "total energy is lost during the impact only, with
 // no further loss after separation". The disks meet head on, so the loss is the inelastic
 // normal correction (seed fig. 4.22: a few per cent); friction has nothing to slide against.

@@ -122,6 +122,7 @@ int MultiFieldContact::correct(Grid& grid, const Particles& p,
         }
         const bool surface = r >= 0 && surfaces_[r] != nullptr;
         const Vector2 x = grid.nodePosition(n);
+        if (surface && !surfaces_[r]->facesNode(x)) continue;  // beyond a corner (header)
         if (r >= 0) {
             // Seed A14: only the deformable bodies are corrected, against the rigid velocity.
             const Vector2 vRef = rigid[r]->velocity(tNew, x);

@@ -54,14 +54,18 @@ void RigidSurface::place(const Particles& p, int body)
     translation_ = c - c0;
 }
 
+// To the shape's own frame: X = R^T (x - c) + c0.
+Vector2 RigidSurface::toShapeFrame(const Vector2& x) const
+{
+    const Vector2 d = x - c_;
+    return c0_ + Vector2(cos_ * d.x() + sin_ * d.y(), -sin_ * d.x() + cos_ * d.y());
+}
+
 Vector2 RigidSurface::outwardNormal(const Vector2& x, const Vector2& hint) const
 {
-    // To the shape's own frame: X = R^T (x - c) + c0.
-    const auto toShape = [this](const Vector2& d) {
-        return Vector2(cos_ * d.x() + sin_ * d.y(), -sin_ * d.x() + cos_ * d.y());
-    };
-    const Vector2 X = c0_ + toShape(x - c_);
-    const Vector2 N = normalInShapeFrame(X, toShape(hint));
+    const Vector2 X = toShapeFrame(x);
+    const Vector2 H(cos_ * hint.x() + sin_ * hint.y(), -sin_ * hint.x() + cos_ * hint.y());
+    const Vector2 N = normalInShapeFrame(X, H);
     return Vector2(cos_ * N.x() - sin_ * N.y(), sin_ * N.x() + cos_ * N.y());
 }
 
@@ -75,6 +79,29 @@ bool RigidSurface::insidePolygon(const Vector2& X) const
             in = !in;
     }
     return in;
+}
+
+bool RigidSurface::facesNode(const Vector2& x) const
+{
+    const Vector2 X = toShapeFrame(x);
+    if (circle_ || insidePolygon(X)) return true;
+    const double scale = (points_[1] - points_[0]).norm();
+    double best = std::numeric_limits<double>::max();
+    bool corner = false;
+    for (std::size_t i = 0; i < points_.size(); ++i) {
+        const Vector2& a = points_[i];
+        const Vector2 e = points_[(i + 1) % points_.size()] - a;
+        const double t = (X - a).dot(e) / e.squaredNorm();
+        const Vector2 f = a + std::clamp(t, 0.0, 1.0) * e;
+        const double d = (X - f).norm();
+        if (d < best - 1e-12 * scale) {
+            best = d;
+            corner = t <= 0.0 || t >= 1.0;
+        } else if (d <= best + 1e-12 * scale) {
+            corner = corner && (t <= 0.0 || t >= 1.0);
+        }
+    }
+    return best <= 1e-12 * scale || !corner;
 }
 
 Vector2 RigidSurface::normalInShapeFrame(const Vector2& X, const Vector2& hint) const
