@@ -23,7 +23,9 @@ foreach(tutorial "verification/elasticBar;bar.png;error.png"
                  "geotechnics/footingBearing;pressure.png;error.png"
                  "geotechnics/verticalCut;pressure.png;error.png"
                  "geotechnics/blade;force.png;depth.png;error.png"
+                 "geotechnics/anchors;load.png;error.png"
                  "earthmoving/cornBlade;force.png;error.png"
+                 "earthmoving/bucket;force.png;error.png;bucket.png"
                  "materials/oedometerPoint;oedometer.png"
                  "geotechnics/silo;flowRate.png;flowPattern-0.2.png;error.png")
   list(GET tutorial 0 path)
