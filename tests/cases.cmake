@@ -26,6 +26,7 @@ foreach(tutorial "verification/elasticBar;bar.png;error.png"
                  "geotechnics/anchors;load.png;error.png"
                  "earthmoving/cornBlade;force.png;error.png"
                  "earthmoving/bucket;force.png;error.png;bucket.png"
+                 "earthmoving/silos;mass.png;layers-end.png;error.png"
                  "materials/oedometerPoint;oedometer.png"
                  "geotechnics/silo;flowRate.png;flowPattern-0.2.png;error.png")
   list(GET tutorial 0 path)
