@@ -1,6 +1,7 @@
 // Time stepping and write control (system/controlDict), OpenFOAM's Time semantics.
 #include "core/error.H"
 #include "dictionary/Dictionary.H"
+#include "support/CaseRunner.H"
 #include "time/TimeControl.H"
 
 #include <gtest/gtest.h>
@@ -73,4 +74,23 @@ TEST(TimeControl, aFixedStepAboveTheLimitStopsWithTheLimitInTheMessage)
     }
     EXPECT_THROW(tc.deltaT(0.0, 5e-4), RunError);  // particles sped up during a run
     EXPECT_NO_THROW(tc.checkStable(2e-3, ""));
+}
+
+// A material listed in constant/materials that no body uses sets no time step: the silo
+// case lists corn and sand, polar and nonpolar, and runs one of them.
+TEST(TimeControl, anUnusedMaterialDoesNotShortenTheStableStep)
+{
+    namespace t = gpic::test;
+    t::ScratchDir scratch("unusedMaterial");
+    const auto base = scratch.path() / "base", extra = scratch.path() / "extra";
+    t::copyCase(t::tutorialPath("verification/elasticBar"), base);
+    t::copyCase(t::tutorialPath("verification/elasticBar"), extra);
+    {
+        std::ofstream m(extra / "constant" / "materials", std::ios::app);
+        m << "steel { type linearElastic; rho 7850; E 200e9; nu 0.3; }\n";
+    }
+    const double dtBase = t::initialisedSimulation(base)->solver().criticalTimeStep();
+    const double dtExtra = t::initialisedSimulation(extra)->solver().criticalTimeStep();
+    EXPECT_GT(dtBase, 0.0);
+    EXPECT_EQ(dtExtra, dtBase);  // steel's wave speed, 5000 times the bar's, would cut it 5000-fold
 }

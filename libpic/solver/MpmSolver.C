@@ -39,7 +39,7 @@ MpmSolver::MpmSolver(Grid grid, Particles particles,
     }
     particles_.sortByMaterial();
     reindex();
-    materialDeforms_.assign(materials_.size(), 1);
+    markDeformingMaterials();
     for (const auto& b : blocks_)
         if (b.material < 0 || b.material >= static_cast<int>(materials_.size()))
             throw RunError("particle material id " + std::to_string(b.material) +
@@ -247,11 +247,22 @@ void MpmSolver::setRigidBodies(std::vector<std::unique_ptr<RigidBodyDriver>> dri
         for (std::size_t b = 0; b < rigid_.size(); ++b)
             if (rigid_[b]) rigid_[b]->attach(info[b]);
     }
-    // A material used only by rigid bodies sets no wave speed: it never deforms.
-    materialDeforms_.assign(materials_.size(), anyRigid ? 0 : 1);
-    for (std::size_t q = 0; q < particles_.size(); ++q)
-        if (!driverOf(q)) materialDeforms_[particles_.material[q]] = 1;
+    markDeformingMaterials();
     reindex();
+}
+
+void MpmSolver::markDeformingMaterials()
+{
+    materialDeforms_.assign(materials_.size(), 0);
+    bool any = false;
+    for (std::size_t q = 0; q < particles_.size(); ++q)
+        if (!driverOf(q)) {
+            const int m = particles_.material[q];
+            if (m >= 0 && m < static_cast<int>(materials_.size())) materialDeforms_[m] = any = true;
+        }
+    // No deformable particle yet (a fill whose layers all sleep): every material counts, so
+    // the time step stays finite and on the safe side.
+    if (!any) materialDeforms_.assign(materials_.size(), 1);
 }
 
 void MpmSolver::constrainRigidNodes(double t)

@@ -24,10 +24,7 @@ void MpmSolver::replaceParticles(Particles particles)
         if (b.material < 0 || b.material >= static_cast<int>(materials_.size()))
             throw RunError("particle material id " + std::to_string(b.material) +
                            " has no material in constant/materials");
-    // As setRigidBodies: a material used only by rigid bodies sets no wave speed.
-    materialDeforms_.assign(materials_.size(), rigid_.empty() ? 1 : 0);
-    for (std::size_t q = 0; q < particles_.size(); ++q)
-        if (!driverOf(q)) materialDeforms_[particles_.material[q]] = 1;
+    markDeformingMaterials();
     // As the constructor: the small-mass cut-off follows the lightest particle present.
     double lightest = 0;
     for (double m : particles_.m) lightest = lightest == 0 ? m : std::min(lightest, m);
