@@ -100,8 +100,10 @@ int main(int argc, char** argv)
             for (std::size_t k = 0; k < surfaces.size(); ++k)
                 plot += std::string(k ? ", " : "") + gnuplotQuoted(dat.string()) + " index " + std::to_string(k) +
                         " with lines lw 2 title " + gnuplotQuoted("t = " + times[k] + " s");
+            // Free axis scales: a heap of a few cm on a surface metres long would not show at
+            // equal scales.
             runGnuplot("set terminal pngcairo size 1000,500\nset output " + gnuplotQuoted((out / "surface.png").string()) +
-                           "\nset size ratio -1\nset xlabel 'x1 [m]'\nset ylabel 'x2 [m]'\nset grid\nset key outside right\n"
+                           "\nset xlabel 'x1 [m]'\nset ylabel 'x2 [m]'\nset grid\nset key outside right\n"
                            "plot " + plot + "\n",
                        (out / "surface.png").string(), dat.string());
             for (std::size_t k = 0; k < surfaces.size(); ++k) {
