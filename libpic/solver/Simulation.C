@@ -157,7 +157,8 @@ Simulation::Simulation(const RunOptions& options)
         for (int side = 0; side < 4; ++side)
             setup.sideHasOpening[side] = solver_->boundary(static_cast<GridSide>(side)).hasOpening();
         setup.cellHeight = solver_->grid().cellSize().y();
-        setup.gridBottom = solver_->grid().origin().y();
+        setup.gridMin = solver_->grid().origin();
+        setup.gridMax = solver_->grid().upper();
         stages_ = std::make_unique<StageSequence>(*stagesDict, std::move(setup), dir);
         if (hasLoads_ && stages_->changesParticles())
             controlDict_.fail("stages", "the loads of constant/loads hold particle indices: with loads no stage may "

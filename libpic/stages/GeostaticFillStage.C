@@ -51,16 +51,29 @@ GeostaticFillStage::GeostaticFillStage(const Dictionary& dict, const StageSetup&
                                                  "0 <= phi < 90 (degrees)"));
 }
 
+Vector2 GeostaticFillStage::up() const
+{
+    const Vector2 g = gravity();
+    return g.norm() > 0 ? Vector2(-g / g.norm()) : Vector2(0.0, 1.0);
+}
+
 bool GeostaticFillStage::addLayer(MpmSolver& solver, ParticlePool& pool, double t, long step)
 {
+    // Heights and depths are measured against gravity, so a scene turned on the grid (gravity
+    // not along -x2, seed fig. 6.19) fills in layers normal to gravity, as the seed's upright
+    // one does; with gravity along -x2 the height is x2.
+    const Vector2 u = up();
+    const auto height = [&](const Particles& p, std::size_t q) { return p.x[q].dot(u); };
     const Particles& sleeping = pool.dormant();
-    const auto waiting = [&](const Particles& p, std::size_t q) { return fills(p.body[q]) && p.x[q].y() < upTo_; };
+    const auto waiting = [&](const Particles& p, std::size_t q) { return fills(p.body[q]) && height(p, q) < upTo_; };
     double lowest = std::numeric_limits<double>::infinity();
     for (std::size_t q = 0; q < sleeping.size(); ++q)
-        if (waiting(sleeping, q)) lowest = std::min(lowest, sleeping.x[q].y());
+        if (waiting(sleeping, q)) lowest = std::min(lowest, height(sleeping, q));
     if (!std::isfinite(lowest)) return false;
-    // The band of the lowest waiting particle: bands of layerThickness from the grid's bottom.
-    const double y0 = setup().gridBottom;
+    // The band of the lowest waiting particle: bands of layerThickness from the grid's lowest corner.
+    const Vector2 &lo = setup().gridMin, &hi = setup().gridMax;
+    const double y0 = std::min({Vector2(lo.x(), lo.y()).dot(u), Vector2(hi.x(), lo.y()).dot(u),
+                                Vector2(lo.x(), hi.y()).dot(u), Vector2(hi.x(), hi.y()).dot(u)});
     band_ = std::max(band_ + 1, static_cast<long>(std::floor((lowest - y0) / thickness_ + 1e-9)));
     const double top = y0 + (band_ + 1) * thickness_;
     const double g = gravity().norm();
@@ -68,17 +81,21 @@ bool GeostaticFillStage::addLayer(MpmSolver& solver, ParticlePool& pool, double 
     std::size_t count = 0;
     pool.exchange(
         solver, [](const Particles&, std::size_t) { return false; },
-        [&](const Particles& p, std::size_t q) { return waiting(p, q) && p.x[q].y() < top; },
+        [&](const Particles& p, std::size_t q) { return waiting(p, q) && height(p, q) < top; },
         [&](Particles& p, std::size_t begin, std::size_t end) {
             // The free surface of the new layer: the top of its particles' domains.
-            for (std::size_t q = begin; q < end; ++q) surface = std::max(surface, p.x[q].y() + p.halfSize[q].y());
+            for (std::size_t q = begin; q < end; ++q)
+                surface = std::max(surface, height(p, q) + p.halfSize[q].cwiseProduct(u).cwiseAbs().sum());
             for (std::size_t q = begin; q < end; ++q) {
                 const double rho = solver.materials()[static_cast<std::size_t>(p.material[q])]->rho();
-                const double s22 = -rho * g * std::max(0.0, surface - p.x[q].y());  // eq. 3.3.4
-                p.sigma[q] = SymTensor(K0_ * s22, s22, K0_ * s22, 0.0);
+                const double sV = -rho * g * std::max(0.0, surface - height(p, q));  // eq. 3.3.4, along gravity
+                // K0 sV across gravity and out of plane, sV along it: K0 sV I + (1 - K0) sV u u^T.
+                const double sUU = (1.0 - K0_) * sV;
+                p.sigma[q] = SymTensor(K0_ * sV + sUU * u.x() * u.x(), K0_ * sV + sUU * u.y() * u.y(), K0_ * sV,
+                                       sUU * u.x() * u.y());
                 p.v[q].setZero();
                 if (p.polar.enabled()) {  // no couple stress, sigma21 = sigma12 (eq. 3.3.4)
-                    p.polar.sigma21[q] = 0.0;
+                    p.polar.sigma21[q] = p.sigma[q][XY];
                     p.polar.mu[q].setZero();
                     p.polar.omega[q] = 0.0;
                 }
@@ -87,8 +104,8 @@ bool GeostaticFillStage::addLayer(MpmSolver& solver, ParticlePool& pool, double 
         });
     ++layers_;
     until().start(solver, t, step);
-    info() << "Stage " << name() << ": layer " << layers_ << ", " << count << " particles up to x2 = " << surface
-           << " m, t = " << t << " s\n";
+    info() << "Stage " << name() << ": layer " << layers_ << ", " << count << " particles up to "
+           << (u.x() == 0.0 ? "x2" : "height") << " = " << surface << " m, t = " << t << " s\n";
     return true;
 }
 
