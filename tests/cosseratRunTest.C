@@ -120,3 +120,27 @@ TEST(CosseratRun, aRestartContinuesBitwiseAsTheStraightRun)
     EXPECT_FALSE(read.hasHistory("microRotation"));
     expectBitwise(read.polar.w, restarted.solver().particles().polar.w, "microRotation read back");
 }
+
+// The rotation field exists only where a body is made of a polar material: a Cosserat material
+// that constant/materials lists but no body uses (cases list both and pick one) leaves the
+// scene nonpolar, with no rotation arrays and no rotational time-step limit.
+TEST(CosseratRun, aPolarMaterialNoBodyUsesAddsNoRotationField)
+{
+    ScratchDir scratch("cosseratUnused");
+    const fs::path polar = scratch.path() / "polar", listedOnly = scratch.path() / "listedOnly";
+    columnCase(polar, "USL", 1e-3);
+    columnCase(listedOnly, "USL", 1e-3);
+    {
+        std::ofstream m(listedOnly / "constant" / "materials", std::ios::app);
+        m << "soil { type linearElastic; rho 2650; E 0.78e6; nu 0.3; }\n";
+    }
+    replaceText(listedOnly / "constant/bodies", "material sand;", "material soil;");
+    const auto used = initialisedSimulation(polar);
+    const auto unused = initialisedSimulation(listedOnly);
+    EXPECT_TRUE(used->solver().hasRotation());
+    EXPECT_TRUE(used->solver().particles().polar.enabled());
+    EXPECT_FALSE(unused->solver().hasRotation());
+    EXPECT_FALSE(unused->solver().particles().polar.enabled());
+    // Without the rotation the step is the translational one (E = 2 G (1 + nu) as sand's G).
+    EXPECT_GT(unused->solver().criticalTimeStep(), used->solver().criticalTimeStep());
+}

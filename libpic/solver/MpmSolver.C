@@ -33,10 +33,12 @@ MpmSolver::MpmSolver(Grid grid, Particles particles,
             else sideNodes_[s].push_back(n);
         hasOutlet_ = hasOutlet_ || bc.letsOut();
     }
-    for (const auto& m : materials_) {
+    for (const auto& m : materials_)
         for (const auto& h : m->historyNames()) particles_.declareHistory(h);
-        hasRotation_ = hasRotation_ || m->needsRotation();
-    }
+    // The rotation field only where a particle of a polar material is in the scene: a polar
+    // material that constant/materials lists but no body uses costs nothing.
+    for (int m : particles_.material)
+        if (m >= 0 && m < static_cast<int>(materials_.size()) && materials_[m]->needsRotation()) hasRotation_ = true;
     particles_.sortByMaterial();
     reindex();
     markDeformingMaterials();

@@ -125,8 +125,22 @@ Simulation::Simulation(const RunOptions& options)
         step_ = t.get<long>("index");
     }
 
+    // The particles a stage holds back (a restart inside a fill) belong to the scene as well.
+    Particles dormant;
+    const fs::path dormantFile = fs::path(dir) / startName / "dormant.vtp";
+    const bool staged = controlDict_.subDictPtr("stages") != nullptr;
+    if (staged && fs::exists(dormantFile)) {
+        double t = 0;
+        std::vector<std::string> stored;
+        readParticles(dormantFile.string(), dormant, t, &stored);
+        remapMaterials(dormant, stored, materialNames(materials), startName + "/dormant.vtp");
+    }
+    bool dormantPolar = false;
+    for (int m : dormant.material) dormantPolar = dormantPolar || materials[static_cast<std::size_t>(m)]->needsRotation();
+
     solver_ = std::make_unique<MpmSolver>(std::move(grid), std::move(particles), std::move(materials),
                                           std::move(shape), std::move(boundaries));
+    if (dormantPolar) solver_->enableRotation();
     solver_->setGravity(readGravity(dir));
     solver_->setDamping(damping);
     solver_->setTime(time_);
@@ -163,15 +177,6 @@ Simulation::Simulation(const RunOptions& options)
         if (hasLoads_ && stages_->changesParticles())
             controlDict_.fail("stages", "the loads of constant/loads hold particle indices: with loads no stage may "
                                         "wake, put to sleep, fill or dig particles (give every stage all bodies)");
-        // Where the start directory says the run is (no uniform/stage: a fresh start).
-        Particles dormant;
-        const fs::path dormantFile = fs::path(dir) / startName / "dormant.vtp";
-        if (fs::exists(dormantFile)) {
-            double t = 0;
-            std::vector<std::string> stored;
-            readParticles(dormantFile.string(), dormant, t, &stored);
-            remapMaterials(dormant, stored, materialNames(solver_->materials()), startName + "/dormant.vtp");
-        }
         const fs::path stageFile = fs::path(dir) / startName / "uniform/stage";
         if (fs::exists(stageFile)) {
             const Dictionary f = Dictionary::readFile(stageFile.string(), startName + "/uniform/stage");
