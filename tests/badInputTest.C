@@ -175,6 +175,13 @@ TEST_F(BadInput, anUnknownShapeFunctionListsTheValidOnes)
                    {"system/mpmSchemes:4:", "shapeFunction", "'trilinear'", "bilinear, uGIMP"});
 }
 
+TEST_F(BadInput, aFlipFractionOutsideZeroToOneNamesTheRange)
+{
+    startGood();
+    setEntry(schemes(), "flipFraction", "1.5");
+    expectRejected("picSolver", badInput, {"system/mpmSchemes:", "flipFraction", "0 <= flipFraction <= 1"});
+}
+
 TEST_F(BadInput, anUnknownBodyShapeListsTheValidShapes)
 {
     startGood();

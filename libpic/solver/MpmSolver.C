@@ -508,7 +508,10 @@ void MpmSolver::gridToParticles(double dt)
             a += N * accel[n];
         }
         p.x[q] += dt * vNew;  // eq. 2.4.7
-        p.v[q] += dt * a;     // eq. 2.4.8 (FLIP)
+        // eq. 2.4.8 (FLIP), blended with PIC when flipFraction < 1: a particle's own velocity
+        // beyond what its nodes carry (the FLIP null space, e.g. at a wall that stops its
+        // nodes) then decays by flipFraction per step instead of persisting.
+        p.v[q] = flipFraction_ * (p.v[q] + dt * a) + (1.0 - flipFraction_) * vNew;
         if (!std::isfinite(p.v[q].x() + p.v[q].y())) firstBad = std::min(firstBad, q);
     }
     for (std::size_t q : rigidParticles_) {  // drivers cache their motion: serial

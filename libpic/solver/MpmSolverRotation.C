@@ -247,8 +247,8 @@ void MpmSolver::rotationToParticles(double dt)
             w += weights_.N[k0 + k] * r.rate[n];
             a += weights_.N[k0 + k] * r.accel[n];
         }
-        p.polar.w[q] += dt * w;      // as eq. 2.4.7
-        p.polar.omega[q] += dt * a;  // as eq. 2.4.8 (FLIP)
+        p.polar.w[q] += dt * w;  // as eq. 2.4.7
+        p.polar.omega[q] = flipFraction_ * (p.polar.omega[q] + dt * a) + (1.0 - flipFraction_) * w;  // as eq. 2.4.8
     }
 }
 

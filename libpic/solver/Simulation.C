@@ -108,6 +108,11 @@ Simulation::Simulation(const RunOptions& options)
     if (fs::exists(fs::path(dir) / "system/mpmSchemes")) schemes = readCaseFile(dir, "system/mpmSchemes");
     const std::string schemeName = schemes.getOrDefault<std::string>("updateScheme", "USL");
     const std::string shapeName = schemes.getOrDefault<std::string>("shapeFunction", "bilinear");
+    const double flipFraction = schemes.found("flipFraction")
+                                    ? schemes.getChecked<double>(
+                                          "flipFraction", [](const double& f) { return f >= 0.0 && f <= 1.0; },
+                                          "0 <= flipFraction <= 1 (1: FLIP, the seed's eq. 2.4.8; 0: PIC)")
+                                    : 1.0;
     sortInterval_ = schemes.getOrDefault<long>("sortInterval", 100);
     if (sortInterval_ < 0) schemes.fail("sortInterval", "sortInterval must be >= 0 (0: never sort)");
     scheme_ = Registry<UpdateScheme>::select(schemeName, schemes, schemes, "updateScheme");
@@ -143,6 +148,7 @@ Simulation::Simulation(const RunOptions& options)
     if (dormantPolar) solver_->enableRotation();
     solver_->setGravity(readGravity(dir));
     solver_->setDamping(damping);
+    solver_->setFlipFraction(flipFraction);
     solver_->setTime(time_);
     if (solver_->hasRotation()) solver_->setRotationSides(readRotationSides(gridDict));
     std::optional<Dictionary> rigidBodiesDict;  // kept for the stages' drivers
