@@ -72,8 +72,7 @@ bool GeostaticFillStage::addLayer(MpmSolver& solver, ParticlePool& pool, double 
     if (!std::isfinite(lowest)) return false;
     // The band of the lowest waiting particle: bands of layerThickness from the grid's lowest corner.
     const Vector2 &lo = setup().gridMin, &hi = setup().gridMax;
-    const double y0 = std::min({Vector2(lo.x(), lo.y()).dot(u), Vector2(hi.x(), lo.y()).dot(u),
-                                Vector2(lo.x(), hi.y()).dot(u), Vector2(hi.x(), hi.y()).dot(u)});
+    const double y0 = std::min({lo.dot(u), Vector2(hi.x(), lo.y()).dot(u), Vector2(lo.x(), hi.y()).dot(u), hi.dot(u)});
     band_ = std::max(band_ + 1, static_cast<long>(std::floor((lowest - y0) / thickness_ + 1e-9)));
     const double top = y0 + (band_ + 1) * thickness_;
     const double g = gravity().norm();
