@@ -182,6 +182,13 @@ TEST_F(BadInput, aFlipFractionOutsideZeroToOneNamesTheRange)
     expectRejected("picSolver", badInput, {"system/mpmSchemes:", "flipFraction", "0 <= flipFraction <= 1"});
 }
 
+TEST_F(BadInput, anUnknownVolumetricStrainWordListsTheValidWords)
+{
+    startGood();
+    setEntry(schemes(), "volumetricStrain", "bBar");
+    expectRejected("picSolver", badInput, {"system/mpmSchemes:", "volumetricStrain", "'bBar'", "particle, cellMean"});
+}
+
 TEST_F(BadInput, anUnknownBodyShapeListsTheValidShapes)
 {
     startGood();

@@ -118,6 +118,7 @@ void MpmSolver::computeWeights()
     }
     shape_->evaluate(grid_, p, weights_);
     strips_.assign(grid_, p);
+    if (cellMean_) cellMean_->assign(grid_, p, [&](std::size_t q) { return driverOf(q) != nullptr; });
 }
 
 void MpmSolver::particlesToGrid()
@@ -291,9 +292,16 @@ void MpmSolver::computeForces()
         std::fill(particleForce_.begin(), particleForce_.end(), Vector2::Zero());
         for (const auto& load : loads_) load->addForces(time_, p, particleForce_);
     }
+    if (cellMean_)
+        cellMean_->average(p, [&](std::size_t q) { return 0.5 * (p.sigma[q][XX] + p.sigma[q][YY]); }, cellMeanValue_);
     strips_.forEach([&](std::size_t q) {
         // A rigid body carries no stress: its nodes are driven instead.
-        const SymTensor s = driverOf(q) ? SymTensor::Zero() : p.sigma[q];
+        SymTensor s = driverOf(q) ? SymTensor::Zero() : p.sigma[q];
+        if (cellMean_) {  // the cell's mean in-plane pressure in place of the particle's own
+            const double shift = cellMeanValue_[q] - 0.5 * (s[XX] + s[YY]);
+            s[XX] += shift;
+            s[YY] += shift;
+        }
         const std::size_t k0 = q * stride;
         BodyField* body = contact_ ? &contact_->field(p.body[q]) : nullptr;
         for (int a = 0; a < stride; ++a) {
@@ -443,10 +451,10 @@ void MpmSolver::updateStress(double dt)
     {
         auto timer = timers_.time("strain");
         const int stride = weights_.stride;
-#pragma omp parallel for schedule(static) if (nParticles >= minParallelWork())
-        for (long q = 0; q < nParticles; ++q) {
-            // Velocity gradient L_ab = sum_i v_i,a dN_i/dx_b (B v of eq. 2.4.5, plus spin).
+        // Velocity gradient L_ab = sum_i v_i,a dN_i/dx_b (B v of eq. 2.4.5, plus spin).
+        const auto velocityGradient = [&](std::size_t q) {
             Eigen::Matrix2d L = Eigen::Matrix2d::Zero();
+            if (driverOf(q)) return L;  // rigid: no strain, no spin, no volume change
             const std::size_t k0 = q * stride;
             // With a contact pass each body deforms with its own velocity field.
             const std::vector<Vector2>& velocity = contact_ ? contact_->field(p.body[q]).velocity : grid_.velocity;
@@ -455,7 +463,9 @@ void MpmSolver::updateStress(double dt)
                 if (n < 0) continue;
                 L.noalias() += velocity[n] * weights_.dN[k0 + a].transpose();
             }
-            if (driverOf(q)) L.setZero();  // rigid: no strain, no spin, no volume change
+            return L;
+        };
+        const auto strainIncrement = [&](std::size_t q, const Eigen::Matrix2d& L) {
             SymTensor& de = p.dEps[q];
             de[XX] = dt * L(0, 0);
             de[YY] = dt * L(1, 1);
@@ -467,6 +477,23 @@ void MpmSolver::updateStress(double dt)
             p.V[q] *= (1.0 + dt * L(0, 0)) * (1.0 + dt * L(1, 1)) - dt * dt * L(0, 1) * L(1, 0);
             // Stress work by the trapezoidal rule (first half): an energy measure valid for every material.
             p.work[q] += 0.5 * p.V[q] * contract(p.sigma[q], de);
+        };
+        if (!cellMean_) {
+#pragma omp parallel for schedule(static) if (nParticles >= minParallelWork())
+            for (long q = 0; q < nParticles; ++q) strainIncrement(q, velocityGradient(q));
+        }
+        else {
+            velocityGradient_.resize(p.size());
+#pragma omp parallel for schedule(static) if (nParticles >= minParallelWork())
+            for (long q = 0; q < nParticles; ++q) velocityGradient_[q] = velocityGradient(q);
+            cellMean_->average(p, [&](std::size_t q) { return velocityGradient_[q].trace(); }, cellMeanValue_);
+#pragma omp parallel for schedule(static) if (nParticles >= minParallelWork())
+            for (long q = 0; q < nParticles; ++q) {
+                // The cell's mean dilatation rate in place of the particle's own; shear and spin kept.
+                Eigen::Matrix2d& L = velocityGradient_[q];
+                L.diagonal().array() += 0.5 * (cellMeanValue_[q] - L.trace());
+                strainIncrement(q, L);
+            }
         }
     }
     if (hasRotation_) {

@@ -113,6 +113,8 @@ Simulation::Simulation(const RunOptions& options)
                                           "flipFraction", [](const double& f) { return f >= 0.0 && f <= 1.0; },
                                           "0 <= flipFraction <= 1 (1: FLIP, the seed's eq. 2.4.8; 0: PIC)")
                                     : 1.0;
+    // particle: each particle's own dilatation (the seed); cellMean: CellMeanDilatation.H
+    const std::string volumetricStrain = schemes.getWordOrDefault("volumetricStrain", {"particle", "cellMean"}, "particle");
     sortInterval_ = schemes.getOrDefault<long>("sortInterval", 100);
     if (sortInterval_ < 0) schemes.fail("sortInterval", "sortInterval must be >= 0 (0: never sort)");
     scheme_ = Registry<UpdateScheme>::select(schemeName, schemes, schemes, "updateScheme");
@@ -149,6 +151,7 @@ Simulation::Simulation(const RunOptions& options)
     solver_->setGravity(readGravity(dir));
     solver_->setDamping(damping);
     solver_->setFlipFraction(flipFraction);
+    solver_->setCellMeanDilatation(volumetricStrain == "cellMean");
     solver_->setTime(time_);
     if (solver_->hasRotation()) solver_->setRotationSides(readRotationSides(gridDict));
     std::optional<Dictionary> rigidBodiesDict;  // kept for the stages' drivers

@@ -1,0 +1,64 @@
+// Volumetric locking and its remedy, `volumetricStrain cellMean` (schemes/CellMeanDilatation.H).
+// Prandtl's bearing capacity of a strip on a weightless Tresca soil (Mohr-Coulomb with
+// phi = psi = 0): q_u = (2 + pi) c, rough or smooth base alike (Prandtl 1920; e.g. Chen 1975
+// "Limit analysis and soil plasticity", sec. 3.4). The plastic flow is isochoric, which
+// bilinear cells of 2 x 2 particles cannot follow: Nagtegaal, Parks & Rice (1974) showed
+// such elements overestimate this collapse load, the more the coarser the mesh. The case is
+// tutorials/geotechnics/footingBearing without weight, friction or initial stress, on
+// 0.1 m cells (the 0.2 m half footing spans two of them).
+#include "support/CaseRunner.H"
+
+#include <cmath>
+#include <iostream>
+
+using namespace gpic;
+using namespace gpic::test;
+
+namespace {
+
+const double c = 26e3, halfWidth = 0.2;
+const double prandtl = (2.0 + M_PI) * c;  // 133.7 kPa
+
+//- Mean footing pressure [Pa] over 15 ... 25 mm of settlement, where the curve is level.
+double collapsePressure(const std::string& volumetricStrain)
+{
+    ScratchDir scratch("locking");
+    const fs::path dir = scratch.path() / "prandtl";
+    copyCase(tutorialPath("geotechnics/footingBearing"), dir);
+    setEntry(dir / "constant/grid", "cellSize", "0.1");
+    setEntry(dir / "constant/grid", "nCells", "(18 14)");
+    replaceText(dir / "constant/materials", "phi 27;", "phi 0;");
+    replaceText(dir / "constant/bodies", "initialStress    { type geostatic; phi 27; }", "");
+    replaceText(dir / "constant/bodies", "max (0.2 1.32)", "max (0.2 1.4)");
+    setEntry(dir / "constant/g", "value", "(0 0)");
+    setEntry(dir / "system/controlDict", "endTime", "1.25");  // 25 mm at 20 mm/s
+    setEntry(dir / "system/controlDict", "writeInterval", "1.25");
+    setEntry(dir / "system/mpmSchemes", "volumetricStrain", volumetricStrain);
+    runCase(dir);
+    auto f = readColumns(dir / "postProcessing/forces/0/forces.dat");
+    double sum = 0;
+    int n = 0;
+    for (std::size_t k = 0; k < f["footing:Fy"].size(); ++k) {
+        const double settlement = -f["footing:dy"][k];
+        if (settlement >= 0.015 && settlement <= 0.025) {
+            sum += f["footing:Fy"][k] / halfWidth;
+            ++n;
+        }
+    }
+    EXPECT_GT(n, 10);
+    return n ? sum / n : 0.0;
+}
+
+} // namespace
+
+// With the cell's mean dilatation the collapse load on two cells under the half footing is
+// within 8 % of Prandtl's; per particle it locks.
+TEST(VolumetricLocking, cellMeanDilatationGivesPrandtlsCollapseLoadOnACoarseMesh)
+{
+    const double meanDilatation = collapsePressure("cellMean");
+    const double perParticle = collapsePressure("particle");
+    std::cout << "q_u / ((2 + pi) c): cellMean " << meanDilatation / prandtl << ", particle " << perParticle / prandtl
+              << "\n";
+    EXPECT_NEAR(meanDilatation / prandtl, 1.0, 0.08) << "cellMean: " << meanDilatation / 1e3 << " kPa";
+    EXPECT_GT(perParticle / prandtl, 1.15) << "particle: " << perParticle / 1e3 << " kPa";
+}
