@@ -25,4 +25,14 @@ for png in verification_elasticBar/errorAgainstWallTime.png materials_oedometerP
     [ -s "$work/report/$png" ] || { echo "missing $png"; exit 1; }
     grep -q "($png)" "$report" || { echo "report does not show $png"; exit 1; }
 done
+# A report built up over runs: elasticBar's results of the first run stay when only
+# oedometerPoint runs again (its own rows gone from the tutorial), marked as earlier; a new
+# report directory lists elasticBar as not run.
+rm -f "$work/tutorials/verification/elasticBar/validation.dat"
+"$work/tutorials/Allvalidate" -case oedometerPoint -output "$work/report" > /dev/null
+grep -q "^| elasticBar-uGIMP |" "$report" || { echo "elasticBar's earlier rows lost"; exit 1; }
+grep -q "^Results of an earlier run: .* UTC, Allrun ok" "$report" || { echo "earlier run not marked"; exit 1; }
+[ -s "$work/report/verification_elasticBar/bar.png" ] || { echo "earlier picture lost"; exit 1; }
+"$work/tutorials/Allvalidate" -case oedometerPoint -output "$work/other" > /dev/null
+grep -q "Not run at this setting yet" "$work/other/report.md" || { echo "missing tutorial not listed"; exit 1; }
 echo "validation report: $(grep -c '^| ' "$report") table rows"
