@@ -227,8 +227,10 @@ std::ostream& Simulation::log() const { return info(); }
 
 void Simulation::restartGuard()
 {
+    auto before = std::move(guard_);
     guard_ = std::make_unique<StabilityGuard>(controlDict_, *solver_, context_.bodyNames, stages_->gravity(), hasLoads_);
     guard_->start(time_, step_);
+    if (before) guard_->continueStatistics(*before);
 }
 
 void Simulation::writeState(const Particles& particles, double time, long step, double deltaT,
