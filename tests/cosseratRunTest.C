@@ -144,3 +144,32 @@ TEST(CosseratRun, aPolarMaterialNoBodyUsesAddsNoRotationField)
     // Without the rotation the step is the translational one (E = 2 G (1 + nu) as sand's G).
     EXPECT_GT(unused->solver().criticalTimeStep(), used->solver().criticalTimeStep());
 }
+
+// A rigid body holds the micro-rotation at its nodes unless its driver says `rotation free`
+// (seed 6.2.5: fixed at smooth tools, free at rough ones). A stage that gives the body a
+// driver of its own may change that; where the stage's driver is silent, the body keeps the
+// condition of constant/rigidBodies.
+TEST(CosseratRun, aStagesDriverSetsTheRotationConditionAtItsRigidBody)
+{
+    const auto plateFixedAfter = [](const std::string& constantRotation, const std::string& stageRotation) {
+        ScratchDir scratch("polarStages");
+        const fs::path dir = scratch.path() / "column";
+        columnCase(dir, "MUSL", 2e-4);
+        std::ofstream(dir / "constant/materials", std::ios::app) << "steel { type linearElastic; rho 7850; E 200e9; nu 0.3; }\n";
+        std::ofstream(dir / "constant/bodies", std::ios::app)
+            << "plate { material steel; shape { type rectangle; min (0 0.024); max (0.03 0.028); } particlesPerCell 2; }\n";
+        writeDictionary(dir / "constant/rigidBodies", "plate { type fixed; " + constantRotation + " }\n");
+        std::ofstream(dir / "system/controlDict", std::ios::app)
+            << "stages {\n  settle { type run; until { duration 1e-4; } }\n"
+            << "  hold { type run; drivers { plate { type fixed; " + stageRotation + " } } until { duration 1e-4; } }\n}\n";
+        const auto simulation = runAndKeep(dir);
+        EXPECT_EQ(simulation->stages()->records().size(), 2u);
+        const auto& fixed = simulation->solver().rotationField().rigidFixed;
+        EXPECT_EQ(fixed.size(), 2u);
+        return fixed.size() == 2 && fixed[1] != 0;
+    };
+    EXPECT_FALSE(plateFixedAfter("", "rotation free;")) << "the stage's driver frees the rotation";
+    EXPECT_TRUE(plateFixedAfter("rotation free;", "rotation fixed;")) << "the stage's driver fixes it";
+    EXPECT_FALSE(plateFixedAfter("rotation free;", "")) << "a silent stage driver keeps constant/rigidBodies'";
+    EXPECT_TRUE(plateFixedAfter("", "")) << "fixed by default";
+}

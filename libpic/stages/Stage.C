@@ -52,11 +52,15 @@ Stage::Stage(const Dictionary& dict, const StageSetup& setup, double defaultDamp
     // Drivers: constant/rigidBodies, then the stage's own. Built now, so that a bad driver
     // stops the run before its first step, not when the stage comes.
     drivers_.resize(nBodies);
+    rotationFixed_.assign(nBodies, 1);
     const auto addDrivers = [&](const Dictionary& d) {
         for (const auto& key : d.keys()) {
             const int b = bodyId(d, key, key);
             if (!d.isDict(key)) d.fail(key, "'" + key + "' needs a driver sub-dictionary { type ...; }");
-            drivers_[static_cast<std::size_t>(b)] = RigidBodyDriver::New(d.subDict(key));
+            const Dictionary& driver = d.subDict(key);
+            drivers_[static_cast<std::size_t>(b)] = RigidBodyDriver::New(driver);
+            if (driver.found("rotation"))
+                rotationFixed_[static_cast<std::size_t>(b)] = driver.getWord("rotation", {"fixed", "free"}) == "fixed";
         }
     };
     if (setup.rigidBodies) addDrivers(*setup.rigidBodies);
@@ -119,6 +123,7 @@ void Stage::configure(MpmSolver& solver, double t0)
     for (std::size_t b = 0; b < drivers_.size(); ++b)
         if (drivers_[b]) drivers[b] = std::make_unique<StageTimeDriver>(std::move(drivers_[b]), t0);
     solver.setRigidBodies(std::move(drivers));
+    if (solver.hasRotation()) solver.setRigidRotation(rotationFixed_);
 }
 
 StageEvent Stage::begin(MpmSolver& solver, ParticlePool& pool, double t, long step)
