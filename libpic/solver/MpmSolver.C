@@ -633,7 +633,10 @@ double MpmSolver::bytesPerParticle() const
     const std::size_t weights = weights_.node.capacity() * sizeof(int) + weights_.N.capacity() * sizeof(double) +
                                 weights_.dN.capacity() * sizeof(Vector2);
     const std::size_t loads = particleForce_.capacity() * sizeof(Vector2);
-    return double(particles_.bytes() + weights + loads) / double(particles_.size());
+    const std::size_t cellMeans = cellMean_ ? cellMean_->particleBytes() + cellMeanValue_.capacity() * sizeof(double) +
+                                                  velocityGradient_.capacity() * sizeof(Eigen::Matrix2d)
+                                            : 0;
+    return double(particles_.bytes() + weights + loads + cellMeans) / double(particles_.size());
 }
 
 bool MpmSolver::leftThroughOpening(const Vector2& x) const
