@@ -182,6 +182,16 @@ TEST_F(BadInput, aFlipFractionOutsideZeroToOneNamesTheRange)
     expectRejected("picSolver", badInput, {"system/mpmSchemes:", "flipFraction", "0 <= flipFraction <= 1"});
 }
 
+// Not bad input: a cell size written to ten digits (1/75 m as 0.0133333333) makes the grid
+// 2.5e-9 m short of the disk that touches its side; that rounding is accepted.
+TEST_F(BadInput, aGridShortOfABodyByRoundingIsAccepted)
+{
+    setEntry(grid(), "cellSize", "0.0133333333");
+    setEntry(grid(), "nCells", "(75 75)");
+    const AppResult r = runApplication("picInit", dir);
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+}
+
 TEST_F(BadInput, anUnknownVolumetricStrainWordListsTheValidWords)
 {
     startGood();

@@ -79,7 +79,11 @@ FilledBodies fillBodies(const Dictionary& bodiesDict, const Grid& grid,
         const int mat = materialIndex(body, materials);
         const auto shape = Shape::New(body.subDict("shape"));
         const auto [lo, hi] = shape->bounds();
-        if (!grid.contains(lo) || !grid.contains(hi)) {
+        // A millionth of a cell of slack: a cell size written with a few decimals (1.8/135 as
+        // 0.0133333333) leaves the grid a rounding short of the shape it was sized for.
+        const double slack = 1e-6 * grid.minCellSize();
+        const Vector2 gridLo = grid.origin().array() - slack, gridHi = grid.upper().array() + slack;
+        if ((lo.array() < gridLo.array()).any() || (hi.array() > gridHi.array()).any()) {
             std::ostringstream msg;
             msg << "body '" << key << "' reaches outside the grid: its shape spans ("
                 << lo.transpose() << ") - (" << hi.transpose() << "), the grid ("
