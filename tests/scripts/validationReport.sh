@@ -35,4 +35,12 @@ grep -q "^Results of an earlier run: .* UTC, Allrun ok" "$report" || { echo "ear
 [ -s "$work/report/verification_elasticBar/bar.png" ] || { echo "earlier picture lost"; exit 1; }
 "$work/tutorials/Allvalidate" -case oedometerPoint -output "$work/other" > /dev/null
 grep -q "Not run at this setting yet" "$work/other/report.md" || { echo "missing tutorial not listed"; exit 1; }
+# A tutorial run with chosen Allrun arguments: the report and the stored stamp name them.
+"$work/tutorials/Allvalidate" -case oedometerPoint -args=-full -output "$work/report" > /dev/null
+grep -q '^Run now: `Allrun -full`' "$report" || { echo "the Allrun arguments not in the report"; exit 1; }
+grep -q "UTC, Allrun -full ok" "$work/report/materials_oedometerPoint/run.txt" || { echo "stamp lacks the arguments"; exit 1; }
+grep -q "^| oedometerPoint-associated-psi10 | 30000steps " "$report" || { echo "the -full ladder did not run"; exit 1; }
+if "$work/tutorials/Allvalidate" -args=-full -output "$work/report" > /dev/null 2>&1; then
+    echo "-args without -case accepted"; exit 1
+fi
 echo "validation report: $(grep -c '^| ' "$report") table rows"
