@@ -27,6 +27,27 @@ def run_summary(log_path):
     raise RuntimeError('no End: line in ' + log_path + ' (did the run fail?)')
 
 
+def run_reached(log_path):
+    """(particles, steps, wall seconds) of a picSolver run, finished or not: the 'End:' line,
+    else the case line's particle count and the last progress line's step and wall time."""
+    try:
+        return run_summary(log_path)
+    except RuntimeError:
+        pass
+    particles = steps = wall = None
+    with open(log_path) as f:
+        for line in f:
+            m = re.match(r'Case \S+: (\d+) particles', line)
+            if m:
+                particles = int(m.group(1))
+            m = re.match(r't = \S+\s+step (\d+)\s+dt \S+\s+wall\s+(\S+) s', line)
+            if m:
+                steps, wall = int(m.group(1)), float(m.group(2))
+    if None in (particles, steps, wall):
+        raise RuntimeError('no progress line in ' + log_path)
+    return particles, steps, wall
+
+
 def read_particles(path):
     """Point arrays of a particles.vtp (raw appended binary, UInt64 headers), by name.
 

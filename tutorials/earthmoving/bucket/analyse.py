@@ -12,11 +12,14 @@ The weighted bucket rides on the corn: over the drag its mean vertical load from
 bucket:Fy, equals its weight m g (m: the mass of its particles, g: constant/g); the error
 (Fy - m g) / m g [%] checks the driver and the forces together.
 
-Usage: analyse.py <case> [-series] [-full] [-post TAG]
+Usage: analyse.py <case> [-series] [-full] [-marks] [-post TAG]
 -series writes series.dat (travel [mm], F_x1, F_x2 [N/m]) and prints
         F(50 mm) F(100 mm) F(end) Fy_mean m_g error_%   ('-' where not reached);
         F(end): over the last 20 mm; Fy_mean: bucket:Fy over 50 mm ... the end.
--full   prints F_x1 every 100 mm and the seed's statement at 800 mm.
+-full   prints F_x1 every 100 mm, the seed's statement at 800 mm and the corn gone over the
+        grid's top (the spill function object), if any.
+-marks  prints the travel reached [mm], then "mm F_x1" for every 100 mm mark reached (a
+        drag the stability guard stopped included: what it reached).
 -post   free surfaces every 100 mm (picFreeSurface; fig. 6.30) -> surface-TAG.png and .dat;
         PDR over 10 mm after 100, 500, 800 mm (picDisplacementRatio; figs. 6.32-6.34, the
         seed's colour bands) -> pdr-TAG-<mm>.png; normal and shear stress along the inside of
@@ -195,8 +198,24 @@ def main():
         values = [(mm, at(t, fx1, travel, mm * 1e-3 - (WINDOW if mm == 800 else 0))) for mm in range(100, 900, 100)]
         print('draft force F_x1 [N/m] at ' + ', '.join(f'{mm}: {fmt(v)}' for mm, v in values))
         print('seed: nonpolar = measured up to 600 mm, -12 % at 800 mm; polar below both')
+        gone = spilled(case)
+        if gone:
+            print(f'corn gone over the grid\'s top (outflow): {gone:.4g} kg/m')
+    if '-marks' in sys.argv:
+        print(f'{max(travel) * 1e3:.0f}')
+        for mm in range(100, 900, 100):
+            value = at(t, fx1, travel, mm * 1e-3 - (WINDOW if mm == 800 else 0))
+            if value is not None:
+                print(mm, fmt(value))
     if '-post' in sys.argv:
         post(case, sys.argv[sys.argv.index('-post') + 1], t, travel, dy)
+
+
+def spilled(case):
+    """Corn gone through the open top [kg/m]: the spill function object's last line."""
+    files = sorted(glob.glob(os.path.join(case, 'postProcessing', 'spill', '*', 'massFlow.dat')))
+    lines = [l.split() for l in open(files[-1]) if l.strip() and not l.startswith('#')] if files else []
+    return float(lines[-1][2]) if lines else 0.0
 
 
 def tool_forces_dy(case):
