@@ -98,6 +98,31 @@ TEST(Forces, theMomentOfAnOffCentreLoadIsTakenAboutCofR)
     EXPECT_EQ(a["plate:Fy"].back(), b["plate:Fy"].back());
 }
 
+TEST(Forces, aFaceCarriesTheLoadOfTheMaterialAlongItOnly)
+{
+    // The 0.4 m block on x in [0.5, 0.9]: the plate's top face under it carries the block's
+    // weight W, the same face over [0, 0.4] (bare plate, a cell from the block) carries none,
+    // and the face cut at the block's middle carries about half (the node on the cut counts
+    // for both halves: a sixth of W between them, the block's edge nodes an eighth of W each).
+    ScratchDir scratch("forcesFaces");
+    const double H = 0.4, rho = 2000, W = rho * g * 0.4 * H;
+    const fs::path dir = writeBlockOnPlate(
+        scratch, 0.5, 0.9, H,
+        "forces { type forces; bodies (plate); writeInterval 10; faces {"
+        " under { body plate; from (1 0.2); to (0 0.2); }"
+        " bare  { body plate; from (0.4 0.2); to (0 0.2); }"
+        " right { body plate; from (1 0.2); to (0.7 0.2); }"
+        " left  { body plate; from (0.7 0.2); to (0 0.2); } } }");
+    runCase(dir);
+    auto c = readColumns(dir / "postProcessing/forces/0/forces.dat");
+    EXPECT_NEAR(c["under:Fy"].back(), -W, 0.01 * W);
+    EXPECT_NEAR(c["under:Fy"].back(), c["plate:Fy"].back(), 1e-9 * W);  // every contact node lies along it
+    EXPECT_NEAR(c["bare:Fy"].back(), 0.0, 1e-9 * W);
+    EXPECT_NEAR(c["bare:Fx"].back(), 0.0, 1e-9 * W);
+    EXPECT_NEAR(c["left:Fy"].back(), c["right:Fy"].back(), 0.05 * W);  // symmetric about x = 0.7
+    EXPECT_LT(c["left:Fy"].back() + c["right:Fy"].back(), -1.05 * W);  // the cut node in both
+}
+
 TEST(Forces, badBodiesAreNamedWithTheValidChoices)
 {
     ScratchDir scratch("forcesBad");
@@ -116,6 +141,23 @@ TEST(Forces, badBodiesAreNamedWithTheValidChoices)
     } catch (const InputError& e) {
         EXPECT_TRUE(contains(e.what(), "'block' is not a rigid body")) << e.what();
         EXPECT_TRUE(contains(e.what(), "valid choices: plate")) << e.what();
+    }
+    dir = writeBlockOnPlate(scratch, 0.0, 1.0, 0.5,
+                            "forces { type forces; faces { top { body block; from (1 0.2); to (0 0.2); } } }", 0.01);
+    try {
+        runCase(dir);
+        FAIL() << "no error";
+    } catch (const InputError& e) {
+        EXPECT_TRUE(contains(e.what(), "face 'top': 'block' is not a rigid body; valid choices: plate")) << e.what();
+    }
+    dir = writeBlockOnPlate(scratch, 0.0, 1.0, 0.5,
+                            "forces { type forces; faces { top { body plate; from (1 0.2); to (1 0.2); } } }", 0.01);
+    try {
+        runCase(dir);
+        FAIL() << "no error";
+    } catch (const InputError& e) {
+        EXPECT_TRUE(contains(e.what(), "system/controlDict:")) << e.what();
+        EXPECT_TRUE(contains(e.what(), "face 'top' has no length")) << e.what();
     }
 }
 

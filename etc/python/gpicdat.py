@@ -82,10 +82,11 @@ def option(argv, name, count, default):
     return [float(v) for v in argv[k + 1:k + 1 + count]]
 
 
-def tool_forces(case, body):
+def tool_forces(case, body, face=None):
     """(time, Fx, Fy, dx) of `body` from every postProcessing/forces/<start>/forces.dat of a
-    case, in time order: the force of the material on the tool and the tool's travel. A
-    restart adds a directory; its lines replace the earlier run's from its start on."""
+    case, in time order: the force of the material on the tool (on its `face` of the forces
+    function object's `faces`, if given) and the tool's travel. A restart adds a directory;
+    its lines replace the earlier run's from its start on."""
     import glob
     import os
     files = sorted(glob.glob(os.path.join(case, 'postProcessing', 'forces', '*', 'forces.dat')),
@@ -98,8 +99,8 @@ def tool_forces(case, body):
             for column in (t, fx, fy, dx):
                 column.pop()
         t += c['time']
-        fx += c[body + ':Fx']
-        fy += c[body + ':Fy']
+        fx += c[(face or body) + ':Fx']
+        fy += c[(face or body) + ':Fy']
         dx += c[body + ':dx']
     return t, fx, fy, dx
 

@@ -2,6 +2,9 @@
 
 #include "core/error.H"
 #include "dictionary/Dictionary.H"
+#include "grid/FaceBand.H"
+#include "grid/Grid.H"
+#include "solver/MpmSolver.H"
 
 #include <algorithm>
 
@@ -20,6 +23,15 @@ Forces::Forces(const Dictionary& dict, const RunContext& context)
         if (std::find(context.bodyNames.begin(), context.bodyNames.end(), n) == context.bodyNames.end())
             dict.fail("bodies", "forces " + name() + ": '" + n + "' is not a body; valid choices: " +
                                     choiceList(context.bodyNames));
+    if (const Dictionary* faces = dict.subDictPtr("faces")) {
+        for (const auto& key : faces->keys()) {
+            const Dictionary& f = faces->subDict(key);
+            Face face{key, f.getWord("body", context.bodyNames), -1, f.get<Vector2>("from"), f.get<Vector2>("to")};
+            if (!((face.to - face.from).norm() > 0.0))
+                f.fail("to", "forces " + name() + ": face '" + key + "' has no length (from = to)");
+            faces_.push_back(face);
+        }
+    }
 }
 
 void Forces::start(const MpmSolver& solver, double)
@@ -38,11 +50,18 @@ void Forces::start(const MpmSolver& solver, double)
                                                choiceList(rigid));
         bodies_.push_back(static_cast<int>(std::find(all.begin(), all.end(), n) - all.begin()));
     }
+    for (auto& face : faces_) {
+        if (std::find(rigid.begin(), rigid.end(), face.bodyName) == rigid.end())
+            throw InputError(file_, line_, "forces " + name() + ": face '" + face.name + "': '" + face.bodyName +
+                                               "' is not a rigid body; valid choices: " + choiceList(rigid));
+        face.body = static_cast<int>(std::find(all.begin(), all.end(), face.bodyName) - all.begin());
+    }
     std::ofstream& os = file("forces.dat");
     os << "# force of the material on each body [N/m], its moment about CofR (" << CofR_.x() << ' '
        << CofR_.y() << ") [N m/m] and the body's mean displacement [m]\n# time";
     for (int b : bodies_)
         for (const char* c : {"Fx", "Fy", "Mz", "dx", "dy"}) os << ' ' << all[b] << ':' << c;
+    for (const auto& face : faces_) os << ' ' << face.name << ":Fx " << face.name << ":Fy";
     os << std::endl;
 }
 
@@ -67,6 +86,17 @@ void Forces::write(const MpmSolver& solver, double time)
         const Vector2 d = mass[k] > 0.0 ? Vector2(moved[k] / mass[k]) : Vector2::Zero();
         os << ' ' << load.force.x() << ' ' << load.force.y() << ' ' << load.momentAbout(CofR_) << ' '
            << d.x() << ' ' << d.y();
+    }
+    const Grid& grid = solver.grid();
+    for (const auto& face : faces_) {
+        const auto k = static_cast<std::size_t>(face.body);
+        const Vector2 d = mass[k] > 0.0 ? Vector2(moved[k] / mass[k]) : Vector2::Zero();
+        const FaceBand band(face.from + d, face.to + d, grid.cellSize().maxCoeff());
+        Vector2 F = Vector2::Zero();
+        if (!grid.fContact.empty())
+            for (int n : grid.active)
+                if (band.station(grid.nodePosition(n))) F += grid.fContact[static_cast<std::size_t>(n)];
+        os << ' ' << F.x() << ' ' << F.y();
     }
     os << std::endl;  // readable while the run goes on
 }

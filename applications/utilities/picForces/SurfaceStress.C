@@ -1,6 +1,7 @@
 #include "SurfaceStress.H"
 
 #include "core/error.H"
+#include "grid/FaceBand.H"
 
 #include <algorithm>
 #include <cmath>
@@ -11,22 +12,18 @@ namespace gpic {
 std::vector<SurfaceStation> surfaceStress(const GridContactForces& grid, const Vector2& p0, const Vector2& p1,
                                           double band)
 {
-    const double L = (p1 - p0).norm();
-    if (!(L > 0.0)) throw InputError("", 0, "-surface: the two ends of the face coincide");
-    const Vector2 t = (p1 - p0) / L;
-    const Vector2 n(t.y(), -t.x());  // right of p0 -> p1: into the material
+    if (!((p1 - p0).norm() > 0.0)) throw InputError("", 0, "-surface: the two ends of the face coincide");
     const double h = grid.spacing.maxCoeff();
-    if (band <= 0.0) band = h;
-    const double tol = 1e-9 * std::max(L, h);
+    const FaceBand face(p0, p1, h, band);
+    const double L = face.length();
+    const Vector2 t = face.tangent(), n = face.normal();
+    band = face.band();
 
     // Nodes along the face, as (s, force).
     std::vector<std::pair<double, Vector2>> nodes;
     for (std::size_t k = 0; k < grid.force.size(); ++k) {
         if (grid.force[k].isZero(0.0)) continue;
-        const Vector2 r = grid.position[k] - p0;
-        const double s = r.dot(t), d = r.dot(n);
-        if (s < -tol || s > L + tol || d <= -0.5 * h || d > band + tol) continue;
-        nodes.emplace_back(std::clamp(s, 0.0, L), grid.force[k]);
+        if (const auto s = face.station(grid.position[k])) nodes.emplace_back(*s, grid.force[k]);
     }
     if (nodes.empty()) {
         std::ostringstream msg;
@@ -43,7 +40,7 @@ std::vector<SurfaceStation> surfaceStress(const GridContactForces& grid, const V
         if (stations.empty() || s - stations.back().s > 1e-3 * h) {
             stations.emplace_back();
             stations.back().s = s;
-            stations.back().x = p0 + s * t;
+            stations.back().x = face.point(s);
         }
         stations.back().Fn += f.dot(n);
         stations.back().Ft += f.dot(t);

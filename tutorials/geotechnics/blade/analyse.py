@@ -14,9 +14,14 @@ the top of the sand's particle domains less the foot of the blade's. Sokolovski'
 material `sand` and mu of constant/contactProperties. Error % = (ours - Sokolovski) /
 Sokolovski x 100 (seed eq. 4.7.1).
 
+The front face alone (the forces function object's face `front`), which is Sokolovski's
+wall, is averaged the same way: the whole blade's forces also hold its foot, pressed up by
+the sand beneath, and its back.
+
 Usage: analyse.py <case> [-window d0 d1] [-nominal h] [-series]
-Prints: h Fx1 Fx2 Fx1_Sokolovski Fx2_Sokolovski error1_% error2_% (Fx1 - Fx1_Sokolovski) and
-the end of the window reached [mm] (less than d1 when a run stopped early).
+Prints: h Fx1 Fx2 Fx1_Sokolovski Fx2_Sokolovski error1_% error2_% (Fx1 - Fx1_Sokolovski),
+the end of the window reached [mm] (less than d1 when a run stopped early), then the front
+face's Fx1 Fx2 error1_% error2_% ('-' without the face).
 -series writes series.dat in the case: blade travel [mm], F_x1, F_x2 [N/m], and both forces
 scaled to the nominal depth by (h_nominal / h)^2, the scaling of Sokolovski's solution.
 """
@@ -75,8 +80,14 @@ h = depth(case)
 keep = [d0 - 1e-9 <= d <= d1 + 1e-9 for d in travel]
 F1, F2 = mean(t, fx1, keep), mean(t, fx2, keep)
 S1, S2 = sokolovski(h, case)
+try:
+    _, gx1, gx2, _ = tool_forces(case, 'blade', 'front')
+    G1, G2 = mean(t, [-f for f in gx1], keep), mean(t, [-f for f in gx2], keep)
+    front = f'{G1:.1f} {G2:.1f} {(G1 - S1) / S1 * 100:.2f} {(G2 - S2) / S2 * 100:.2f}'
+except KeyError:  # a case without the face
+    front = '- - - -'
 print(f'{h:.4f} {F1:.1f} {F2:.1f} {S1:.1f} {S2:.1f} '
-      f'{(F1 - S1) / S1 * 100:.2f} {(F2 - S2) / S2 * 100:.2f} {F1 - S1:.1f} {min(d1, travel[-1]) * 1e3:.1f}')
+      f'{(F1 - S1) / S1 * 100:.2f} {(F2 - S2) / S2 * 100:.2f} {F1 - S1:.1f} {min(d1, travel[-1]) * 1e3:.1f} {front}')
 if '-series' in sys.argv:
     scale = (option('-nominal', 1, [h])[0] / h) ** 2
     with open(os.path.join(case, 'series.dat'), 'w') as f:
