@@ -7,7 +7,7 @@ set ylabel 'draft force F_x1 of the bucket on the corn [N/m]  (x 0.2 m: N in the
 set title "Dragline bucket in corn (seed 6.2.6, fig. 6.25)\nshaded: the seed's bounds on the measured force up to 600 mm (100 ... 1250 N/m)"
 set key outside bottom center horizontal maxrows 3
 set xrange [0:*]
-set yrange [0:*]
+set yrange [0:1500]   # the measured band and a little over: a run stopped by a blow-up ends in a spike
 set object 1 rectangle from first 0, first 100 to first 600, first 1250 behind fc rgb '#ffe0e0' fs solid noborder
 plot NaN with boxes fs solid fc rgb '#ffe0e0' title 'measured, up to 600 mm: 20 ... 250 N (seed text and axis)', \
      for [r in runs] r.'/series.dat' using 1:2 with lines lw 1 title r[8:]
@@ -15,7 +15,7 @@ plot NaN with boxes fs solid fc rgb '#ffe0e0' title 'measured, up to 600 mm: 20 
 set output 'error.png'
 unset object 1
 set xrange [*:*]
-set yrange [0:*]
+set yrange [0:1500]   # the measured band and a little over: a run stopped by a blow-up ends in a spike
 set logscale x
 set xlabel 'wall time [s]'
 set ylabel 'draft force F_x1 at 100 mm of travel [N/m]'
