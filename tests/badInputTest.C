@@ -172,7 +172,7 @@ TEST_F(BadInput, anUnknownShapeFunctionListsTheValidOnes)
     startGood();
     setEntry(schemes(), "shapeFunction", "trilinear");
     expectRejected("picSolver", badInput,
-                   {"system/mpmSchemes:4:", "shapeFunction", "'trilinear'", "bilinear, uGIMP"});
+                   {"system/mpmSchemes:4:", "shapeFunction", "'trilinear'", "bilinear, quadraticBSpline, uGIMP"});
 }
 
 TEST_F(BadInput, aFlipFractionOutsideZeroToOneNamesTheRange)

@@ -76,3 +76,92 @@ TEST(ShapeFunctions, uGimpGradientIsContinuousAcrossACellFaceWhereBilinearJumps)
     const ShapeWeights bilinear = weightsAt("bilinear", grid, xs);
     EXPECT_NEAR(gradOfNode(bilinear, 0, node) - gradOfNode(bilinear, 1, node), 0.5 * 2 / 1.0, 1e-6);
 }
+
+// Quadratic B-splines (QuadraticBSplineShape.H): the weights sum to one and their gradients
+// to zero everywhere, the sides included; inside (2.5 cells from a side) they reproduce
+// linear fields with the node positions and D_p = sum N (x_i - x_p)(x_i - x_p)^T = h^2/4 I
+// (APIC's inertia-like tensor); on a side only the side node has weight; the gradient is
+// continuous across cell faces.
+TEST(ShapeFunctions, quadraticBSplineSumsToOneUpToTheSidesAndIsExactInside)
+{
+    const Vector2 h(0.5, 0.25);
+    const Grid grid(Vector2(-1, 2), h, 8, 10);
+    std::mt19937 random(11);
+    std::uniform_real_distribution<double> ux(-1, 3), uy(2, 4.5);
+    std::vector<Vector2> xs;
+    for (int k = 0; k < 400; ++k) xs.emplace_back(ux(random), uy(random));
+    for (double s : {0.0, 1e-12, 0.5, 1.5, 2.5}) {  // on and near the sides, at the knots
+        xs.emplace_back(-1 + s * h.x(), 3.0);
+        xs.emplace_back(3 - s * h.x(), 3.0);
+        xs.emplace_back(0.0, 2 + s * h.y());
+        xs.emplace_back(0.0, 4.5 - s * h.y());
+    }
+    const ShapeWeights w = weightsAt("quadraticBSpline", grid, xs);
+    ASSERT_EQ(w.stride, 9);
+    int inside = 0;
+    for (std::size_t q = 0; q < xs.size(); ++q) {
+        double sumN = 0;
+        Vector2 sumGrad = Vector2::Zero(), reproduced = Vector2::Zero();
+        Eigen::Matrix2d gradX = Eigen::Matrix2d::Zero(), D = Eigen::Matrix2d::Zero();
+        for (int a = 0; a < w.stride; ++a) {
+            const std::size_t k = q * w.stride + a;
+            ASSERT_GE(w.node[k], 0);
+            EXPECT_GE(w.N[k], 0.0);
+            const Vector2 xi = grid.nodePosition(w.node[k]);
+            sumN += w.N[k];
+            sumGrad += w.dN[k];
+            reproduced += w.N[k] * xi;
+            gradX += xi * w.dN[k].transpose();
+            D += w.N[k] * (xi - xs[q]) * (xi - xs[q]).transpose();
+        }
+        EXPECT_NEAR(sumN, 1.0, 1e-12) << xs[q].transpose();
+        EXPECT_NEAR(sumGrad.norm(), 0.0, 1e-10) << xs[q].transpose();
+        const Vector2 u = (xs[q] - grid.origin()).cwiseQuotient(h);
+        if (u.x() < 2.5 || u.x() > 5.5 || u.y() < 2.5 || u.y() > 7.5) continue;
+        ++inside;
+        EXPECT_NEAR((reproduced - xs[q]).norm(), 0.0, 1e-12);
+        EXPECT_NEAR((gradX - Eigen::Matrix2d::Identity()).norm(), 0.0, 1e-10);
+        EXPECT_NEAR(D(0, 0), 0.25 * h.x() * h.x(), 1e-12);
+        EXPECT_NEAR(D(1, 1), 0.25 * h.y() * h.y(), 1e-12);
+        EXPECT_NEAR(D(0, 1), 0.0, 1e-12);
+    }
+    EXPECT_GT(inside, 20);
+}
+
+TEST(ShapeFunctions, quadraticBSplineHasTheStandardValuesInsideAndOnlyTheSideNodeOnASide)
+{
+    const Grid grid(Vector2(0, 0), Vector2(1, 1), 8, 8);
+    // On a node inside: 3/4 there, 1/8 at both neighbours (per axis).
+    const ShapeWeights w = weightsAt("quadraticBSpline", grid, {{4.0, 4.0}, {0.0, 4.0}, {8.0, 0.0}});
+    for (int a = 0; a < 9; ++a) {
+        const Vector2 xi = grid.nodePosition(w.node[a]);
+        const double wx = xi.x() == 4.0 ? 0.75 : 0.125, wy = xi.y() == 4.0 ? 0.75 : 0.125;
+        EXPECT_NEAR(w.N[a], wx * wy, 1e-14);
+    }
+    // On the left side (x = 0) and in the corner (8, 0): the side's nodes alone.
+    for (int q = 1; q <= 2; ++q)
+        for (int a = 0; a < 9; ++a) {
+            const std::size_t k = static_cast<std::size_t>(q * 9 + a);
+            const Vector2 xi = grid.nodePosition(w.node[k]);
+            const bool onSide = q == 1 ? xi.x() == 0.0 : (xi.x() == 8.0 && xi.y() == 0.0);
+            if (!onSide) EXPECT_EQ(w.N[k], 0.0) << q << ": " << xi.transpose();
+        }
+}
+
+TEST(ShapeFunctions, quadraticBSplineGradientIsContinuousAcrossFacesAndKnots)
+{
+    const Grid grid(Vector2(0, 0), Vector2(1, 1), 8, 8);
+    const double eps = 1e-9;
+    // A cell face (x = 3), a knot between cells (x = 3.5) and the first knots off a side (1.5, 2.5).
+    for (double x : {3.0, 3.5, 1.5, 2.5, 0.5}) {
+        const ShapeWeights w = weightsAt("quadraticBSpline", grid, {{x - eps, 4.5}, {x + eps, 4.5}});
+        for (int n = 0; n <= 8; ++n) {
+            const int node = grid.node(n, 4);
+            double g[2] = {0, 0};
+            for (int q = 0; q < 2; ++q)
+                for (int a = 0; a < 9; ++a)
+                    if (w.node[q * 9 + a] == node) g[q] = w.dN[q * 9 + a].x();
+            EXPECT_NEAR(g[0], g[1], 1e-6) << "x = " << x << ", node " << n;
+        }
+    }
+}

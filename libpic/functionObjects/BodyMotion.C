@@ -21,7 +21,7 @@ void BodyMotion::write(const MpmSolver& solver, double time)
         mass[b] += p.m[q];
         moment[b] += p.m[q] * p.x[q];
         momentum[b] += p.m[q] * p.v[q];
-        kinetic[b] += 0.5 * p.m[q] * p.v[q].squaredNorm();
+        kinetic[b] += p.kineticEnergy(q);  // APIC: with the part C_p carries
         strain[b] += p.work[q];
     }
     std::ofstream& os = file("bodyMotion.dat");

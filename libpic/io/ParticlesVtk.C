@@ -60,6 +60,20 @@ vtkSmartPointer<vtkDoubleArray> tensorArray(const char* name, const std::vector<
     return a;
 }
 
+//- The affine velocity matrix C_p (a velocity gradient, not symmetric) as a 3x3 tensor.
+vtkSmartPointer<vtkDoubleArray> affineArray(const char* name, const decltype(Particles::affine)& C)
+{
+    auto a = doubleArray(name, 9, static_cast<vtkIdType>(C.size()));
+    double* out = a->GetPointer(0);
+    for (std::size_t i = 0; i < C.size(); ++i) {
+        double* o = out + 9 * i;
+        o[0] = C[i](0, 0); o[1] = C[i](0, 1); o[2] = 0.0;
+        o[3] = C[i](1, 0); o[4] = C[i](1, 1); o[5] = 0.0;
+        o[6] = 0.0;        o[7] = 0.0;        o[8] = 0.0;
+    }
+    return a;
+}
+
 vtkSmartPointer<vtkDoubleArray> vectorArray(const char* name, const std::vector<Vector2>& v,
                                             int nComponents)
 {
@@ -159,6 +173,10 @@ void writeParticles(const std::string& path, const Particles& p, double time,
     pd->AddArray(vonMises);
     for (const auto& name : p.historyNames())
         pd->AddArray(scalarArray(name.c_str(), p.history(name)));
+    if (p.hasAffine()) {  // APIC's C_p and the kinetic energy it carries
+        pd->AddArray(affineArray("affineVelocity", p.affine));
+        pd->AddArray(scalarArray("affineKineticEnergy", p.affineEnergy));
+    }
     if (p.polar.enabled()) {  // Cosserat state (CosseratParticles.H), only in polar scenes
         pd->AddArray(scalarArray("microRotation", p.polar.w));
         pd->AddArray(scalarArray("microRotationRate", p.polar.omega));

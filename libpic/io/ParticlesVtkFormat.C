@@ -10,11 +10,13 @@ namespace detail {
 namespace {
 
 // Arrays written by writeParticles; any other one-component Float64 array is a history variable.
-const std::array<const char*, 19> builtinArrays{
+const std::array<const char*, 21> builtinArrays{
     "id", "body", "material", "velocity", "displacement", "initialPosition", "mass", "volume",
     "halfSize", "stress", "strain", "plasticStrain", "pressure", "vonMisesStress", "work",
     // Cosserat scenes only
-    "microRotation", "microRotationRate", "coupleStress", "curvature"};
+    "microRotation", "microRotationRate", "coupleStress", "curvature",
+    // APIC only
+    "affineVelocity", "affineKineticEnergy"};
 
 } // namespace
 

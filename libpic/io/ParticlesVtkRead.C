@@ -133,6 +133,9 @@ void readParticles(const std::string& path, Particles& p, double& time,
     vtkDataArray* coupleA = rotationA ? required(pd, "coupleStress", 3, nv, path) : nullptr;
     vtkDataArray* curvatureA = rotationA ? required(pd, "curvature", 3, nv, path) : nullptr;
 
+    vtkDataArray* affineA = pd->GetArray("affineVelocity") ? required(pd, "affineVelocity", 9, nv, path) : nullptr;
+    vtkDataArray* affineEnergyA = affineA ? required(pd, "affineKineticEnergy", 1, nv, path) : nullptr;
+
     vtkFieldData* fd = poly->GetFieldData();
     vtkDataArray* timeA = fd ? fd->GetArray("TimeValue") : nullptr;
     if (!timeA || timeA->GetNumberOfTuples() < 1)
@@ -157,6 +160,15 @@ void readParticles(const std::string& path, Particles& p, double& time,
     readTensors(stressA, result.sigma);
     readTensors(strainA, result.eps);
     readTensors(plasticA, result.epsP);
+    if (affineA) {
+        result.enableAffine();
+        for (std::size_t i = 0; i < n; ++i) {
+            const auto t = static_cast<vtkIdType>(i);
+            result.affine[i] << affineA->GetComponent(t, 0), affineA->GetComponent(t, 1),
+                                affineA->GetComponent(t, 3), affineA->GetComponent(t, 4);
+        }
+        readScalars(affineEnergyA, result.affineEnergy);
+    }
     if (rotationA) {
         result.polar.enable(n);
         readScalars(rotationA, result.polar.w);

@@ -16,7 +16,25 @@ void Particles::resize(std::size_t n)
     work.resize(n, 0.0);
     dEps.resize(n, SymTensor::Zero()); dOmega.resize(n, 0.0);
     for (auto& h : history_) h.resize(n, 0.0);
+    if (affineOn_) {
+        affine.resize(n, Eigen::Matrix2d::Zero());
+        affineEnergy.resize(n, 0.0);
+    }
     polar.resize(n);
+}
+
+void Particles::enableAffine()
+{
+    affineOn_ = true;
+    affine.resize(size(), Eigen::Matrix2d::Zero());
+    affineEnergy.resize(size(), 0.0);
+}
+
+void Particles::disableAffine()
+{
+    affineOn_ = false;
+    decltype(affine)().swap(affine);
+    std::vector<double>().swap(affineEnergy);
 }
 
 std::size_t Particles::add(const Vector2& position, double mass, double volume,
@@ -61,9 +79,9 @@ const std::vector<double>& Particles::history(const std::string& name) const
 }
 
 namespace {
-template <class T> void permute(std::vector<T>& a, const std::vector<std::size_t>& order)
+template <class V> void permute(V& a, const std::vector<std::size_t>& order)
 {
-    std::vector<T> sorted(order.size());
+    V sorted(order.size());
     for (std::size_t i = 0; i < order.size(); ++i) sorted[i] = a[order[i]];
     a.swap(sorted);
 }
@@ -86,6 +104,10 @@ void Particles::reorder(const std::vector<std::size_t>& order)
     permute(sigma, order); permute(eps, order); permute(epsP, order); permute(work, order);
     permute(dEps, order); permute(dOmega, order);
     for (auto& h : history_) permute(h, order);
+    if (affineOn_) {
+        permute(affine, order);
+        permute(affineEnergy, order);
+    }
     polar.reorder(order);
 }
 
@@ -102,10 +124,10 @@ std::vector<ParticleBlock> Particles::blocks() const
 }
 
 namespace {
-template<class T>
-std::size_t held(const std::vector<T>& a)
+template<class V>
+std::size_t held(const V& a)
 {
-    return a.capacity() * sizeof(T);
+    return a.capacity() * sizeof(typename V::value_type);
 }
 } // namespace
 
@@ -115,7 +137,7 @@ std::size_t Particles::bytes() const
                         held(V) + held(halfSize) + held(sigma) + held(eps) + held(epsP) + held(work) +
                         held(dEps) + held(dOmega);
     for (const auto& h : history_) total += held(h);
-    return total + polar.bytes();
+    return total + held(affine) + held(affineEnergy) + polar.bytes();
 }
 
 } // namespace gpic

@@ -1,6 +1,7 @@
 #include "solver/MpmSolver.H"
 
 #include "core/Threads.H"
+#include <Eigen/LU>
 #include "core/error.H"
 
 #include <algorithm>
@@ -18,12 +19,101 @@ inline double contract(const SymTensor& s, const SymTensor& e)
 }
 } // namespace
 
+void MpmSolver::setTransfer(std::unique_ptr<ParticleTransfer> transfer)
+{
+    transfer_ = std::move(transfer);
+    if (transfer_->affine()) particles_.enableAffine();
+    else particles_.disableAffine();
+    filtered_.clear();
+    filterScratch_.clear();
+}
+
+void MpmSolver::filterVelocity(double dt, int order)
+{
+    auto timer = timers_.time("transferFilter");
+    const int nFields = contact_ ? contact_->nBodies() : 1;
+    const auto nodes = static_cast<std::size_t>(grid_.nNodes());
+    filtered_.resize(static_cast<std::size_t>(nFields));
+    filterScratch_.resize(2 * static_cast<std::size_t>(nFields));
+    const auto isRigidField = [&](int f) { return contact_ && !rigid_.empty() && rigid_[f]; };
+    const auto massOf = [&](int f) -> const std::vector<double>& { return contact_ ? contact_->field(f).mass : grid_.mass; };
+    const auto nActive = static_cast<long>(grid_.active.size());
+    for (int f = 0; f < nFields; ++f) {
+        filtered_[f].resize(nodes);
+        filterScratch_[2 * f].resize(nodes);
+        filterScratch_[2 * f + 1].resize(nodes);
+        if (isRigidField(f)) continue;  // a rigid body's particles follow their driver
+        const std::vector<Vector2>& v = contact_ ? contact_->field(f).velocity : grid_.velocity;
+        const std::vector<Vector2>& a = contact_ ? contact_->field(f).accel : grid_.accel;
+        std::vector<Vector2>& w = filterScratch_[2 * f];
+#pragma omp parallel for schedule(static) if (nActive >= minParallelWork())
+        for (long k = 0; k < nActive; ++k) {
+            const int n = grid_.active[k];
+            w[n] = v[n] - dt * a[n];  // v^t with its conditions: the velocity the update started from
+            filtered_[f][n] = double(order) * w[n];
+        }
+    }
+    const Particles& p = particles_;
+    const int stride = weights_.stride;
+    double binomial = order;  // C(m, k-1)
+    for (int k = 2; k <= order; ++k) {
+        binomial *= double(order - k + 1) / double(k);  // C(m, k)
+        const double coefficient = (k % 2 == 0 ? -1.0 : 1.0) * binomial;
+        for (int f = 0; f < nFields; ++f) {
+            std::vector<Vector2>& next = filterScratch_[2 * f + 1];
+#pragma omp parallel for schedule(static) if (nActive >= minParallelWork())
+            for (long k2 = 0; k2 < nActive; ++k2) next[grid_.active[k2]].setZero();
+        }
+        // One projection grid -> particles -> grid per field: S^T M_p S w, then / m_i.
+        strips_.forEach([&](std::size_t q) {
+            const int f = contact_ ? p.body[q] : 0;
+            if (isRigidField(f)) return;
+            const std::vector<Vector2>& w = filterScratch_[2 * f];
+            std::vector<Vector2>& next = filterScratch_[2 * f + 1];
+            const std::size_t k0 = q * stride;
+            Vector2 vq = Vector2::Zero();
+            for (int c = 0; c < stride; ++c) {
+                const int n = weights_.node[k0 + c];
+                if (n >= 0) vq += weights_.N[k0 + c] * w[n];
+            }
+            for (int c = 0; c < stride; ++c) {
+                const int n = weights_.node[k0 + c];
+                if (n >= 0) next[n] += (weights_.N[k0 + c] * p.m[q]) * vq;
+            }
+        });
+        for (int f = 0; f < nFields; ++f) {
+            if (isRigidField(f)) continue;
+            const std::vector<double>& mass = massOf(f);
+            const std::vector<Vector2>& v = contact_ ? contact_->field(f).velocity : grid_.velocity;
+            const std::vector<Vector2>& a = contact_ ? contact_->field(f).accel : grid_.accel;
+            std::vector<Vector2>& next = filterScratch_[2 * f + 1];
+#pragma omp parallel for schedule(static) if (nActive >= minParallelWork())
+            for (long k2 = 0; k2 < nActive; ++k2) {
+                const int n = grid_.active[k2];
+                next[n] = mass[n] > 0.0 ? Vector2(next[n] / mass[n]) : Vector2::Zero();
+            }
+            applyBoundaries(next);
+            // A node a rigid tool drives keeps the velocity the update started from.
+            if (drivesRigidNodes())
+                for (int n : grid_.active)
+                    if (rigidNodeBody_[n] >= 0) next[n] = v[n] - dt * a[n];
+#pragma omp parallel for schedule(static) if (nActive >= minParallelWork())
+            for (long k2 = 0; k2 < nActive; ++k2) {
+                const int n = grid_.active[k2];
+                filtered_[f][n] += coefficient * next[n];
+            }
+            filterScratch_[2 * f].swap(next);
+        }
+    }
+}
+
 MpmSolver::MpmSolver(Grid grid, Particles particles,
                      std::vector<std::unique_ptr<Material>> materials,
                      std::unique_ptr<ShapeFunction> shape,
                      std::array<std::unique_ptr<BoundaryCondition>, 4> boundaries)
     : grid_(std::move(grid)), particles_(std::move(particles)), materials_(std::move(materials)),
-      shape_(std::move(shape)), boundaries_(std::move(boundaries)), strips_(grid_)
+      shape_(std::move(shape)), boundaries_(std::move(boundaries)), strips_(grid_),
+      transfer_(std::make_unique<FlipTransfer>(Dictionary{}))
 {
     // Constrained side nodes: an opening's nodes are left free.
     for (int s = 0; s < 4; ++s) {
@@ -143,18 +233,19 @@ void MpmSolver::particlesToGrid()
             const double N = weights_.N[k0 + a];
             if (n < 0) continue;
             grid_.markActive(n);  // also at N = 0: its gradient may still carry force
+            const Vector2 v = carriedVelocity(q, n, p.x[q]);  // APIC: v_p + C_p (x_i - x_p)
             if (body) {  // the body's own field, from its particles only (seed G.4 step 1)
                 body->mass[n] += N * p.m[q];
-                body->momentum[n] += (N * p.m[q]) * p.v[q];
+                body->momentum[n] += (N * p.m[q]) * v;
                 continue;
             }
             if (driven && rigid_[p.body[q]]) {
                 if (N > 0.0) rigidNodeBody_[n] = p.body[q];
                 rigidMass_[n] += N * p.m[q];
-                rigidMomentum_[n] += (N * p.m[q]) * p.v[q];
+                rigidMomentum_[n] += (N * p.m[q]) * v;
             }
             grid_.mass[n] += N * p.m[q];             // lumped mass, row sums of eq. 2.3.7
-            grid_.momentum[n] += (N * p.m[q]) * p.v[q];  // eq. 2.4.1
+            grid_.momentum[n] += (N * p.m[q]) * v;  // eq. 2.4.1
         }
     });
     grid_.collectActive();
@@ -513,32 +604,51 @@ void MpmSolver::updateStress(double dt)
 
 void MpmSolver::gridToParticles(double dt)
 {
+    const int order = transfer_->filterOrder();
+    if (order >= 1) filterVelocity(dt, order);
     auto timer = timers_.time("gridToParticles");
     Particles& p = particles_;
     const int stride = weights_.stride;
     const auto nParticles = static_cast<long>(p.size());
+    const double flip = transfer_->flipShare(dt);
+    const bool affine = p.hasAffine(), affineFromGradient = shape_->affineFromGradient();
     long firstBad = nParticles;
 #pragma omp parallel for schedule(static) reduction(min : firstBad) if (nParticles >= minParallelWork())
     for (long q = 0; q < nParticles; ++q) {
         if (driverOf(q)) continue;  // moved below
-        Vector2 vNew = Vector2::Zero(), a = Vector2::Zero();
+        Vector2 vNew = Vector2::Zero(), a = Vector2::Zero(), vStar = Vector2::Zero();
+        Eigen::Matrix2d B = Eigen::Matrix2d::Zero(), D = Eigen::Matrix2d::Zero();
         const std::size_t k0 = q * stride;
         // With a contact pass each body moves with its own corrected field (seed G.4 steps 3-4).
         const BodyField* body = contact_ ? &contact_->field(p.body[q]) : nullptr;
         const std::vector<Vector2>& velocity = body ? body->velocity : grid_.velocity;
         const std::vector<Vector2>& accel = body ? body->accel : grid_.accel;
+        const std::vector<Vector2>* star = order >= 1 ? &filtered_[body ? p.body[q] : 0] : nullptr;
         for (int k = 0; k < stride; ++k) {
             const int n = weights_.node[k0 + k];
             if (n < 0) continue;
             const double N = weights_.N[k0 + k];
             vNew += N * velocity[n];
             a += N * accel[n];
+            if (star) vStar += N * (*star)[n];
+            if (!affine) continue;
+            const Vector2 r = grid_.nodePosition(n) - p.x[q];
+            D.noalias() += (N * r) * r.transpose();  // D_p, h^2/4 I inside a B-spline grid
+            // bilinear: B_p D_p^-1 is the velocity gradient (D_p singular on a grid line)
+            if (affineFromGradient) B.noalias() += velocity[n] * weights_.dN[k0 + k].transpose();
+            else B.noalias() += (N * velocity[n]) * r.transpose();  // B_p (Jiang et al. 2015)
+        }
+        if (affine) {
+            Eigen::Matrix2d& C = p.affine[q];
+            C = affineFromGradient ? B : Eigen::Matrix2d(B * D.inverse());
+            p.affineEnergy[q] = 0.5 * p.m[q] * (C * D * C.transpose()).trace();
         }
         p.x[q] += dt * vNew;  // eq. 2.4.7
-        // eq. 2.4.8 (FLIP), blended with PIC when flipFraction < 1: a particle's own velocity
-        // beyond what its nodes carry (the FLIP null space, e.g. at a wall that stops its
-        // nodes) then decays by flipFraction per step instead of persisting.
-        p.v[q] = flipFraction_ * (p.v[q] + dt * a) + (1.0 - flipFraction_) * vNew;
+        if (star) p.v[q] = vStar + dt * a;  // XPIC: the filtered v^t plus the increment
+        // eq. 2.4.8 (FLIP), blended with PIC when the FLIP share is below 1: a particle's own
+        // velocity beyond what its nodes carry (the FLIP null space, e.g. at a wall that stops
+        // its nodes) then decays instead of persisting. PIC and APIC: share 0.
+        else p.v[q] = flip * (p.v[q] + dt * a) + (1.0 - flip) * vNew;
         if (!std::isfinite(p.v[q].x() + p.v[q].y())) firstBad = std::min(firstBad, q);
     }
     for (std::size_t q : rigidParticles_) {  // drivers cache their motion: serial
@@ -585,10 +695,13 @@ void MpmSolver::remapVelocity(double dt)
     strips_.forEach([&](std::size_t q) {
         const std::size_t k0 = q * stride;
         BodyField* body = contact_ ? &contact_->field(p.body[q]) : nullptr;
+        // APIC: C_p about the position the weights were taken at (x_p^t = x_p^{t+1} - dt v_p,
+        // v_p being the nodal velocity the particle moved with).
+        const Vector2 xp = p.hasAffine() ? Vector2(p.x[q] - dt * p.v[q]) : p.x[q];
         for (int a = 0; a < stride; ++a) {
             const int n = weights_.node[k0 + a];
             if (n < 0) continue;
-            const Vector2 momentum = (weights_.N[k0 + a] * p.m[q]) * p.v[q];
+            const Vector2 momentum = (weights_.N[k0 + a] * p.m[q]) * carriedVelocity(q, n, xp);
             grid_.momentum[n] += momentum;
             if (body) body->momentum[n] += momentum;
         }

@@ -236,6 +236,7 @@ void MpmSolver::rotationToParticles(double dt)
     const CosseratField& r = rotation_;
     const int stride = weights_.stride;
     const auto nParticles = static_cast<long>(p.size());
+    const double flip = transfer_->rotationFlipShare(dt);  // FLIP under every transfer but FLIP's own blend
 #pragma omp parallel for schedule(static) if (nParticles >= minParallelWork())
     for (long q = 0; q < nParticles; ++q) {
         if (!isPolar(static_cast<std::size_t>(q))) continue;
@@ -248,7 +249,7 @@ void MpmSolver::rotationToParticles(double dt)
             a += weights_.N[k0 + k] * r.accel[n];
         }
         p.polar.w[q] += dt * w;  // as eq. 2.4.7
-        p.polar.omega[q] = flipFraction_ * (p.polar.omega[q] + dt * a) + (1.0 - flipFraction_) * w;  // as eq. 2.4.8
+        p.polar.omega[q] = flip * (p.polar.omega[q] + dt * a) + (1.0 - flip) * w;  // as eq. 2.4.8
     }
 }
 

@@ -108,17 +108,20 @@ Simulation::Simulation(const RunOptions& options)
     if (fs::exists(fs::path(dir) / "system/mpmSchemes")) schemes = readCaseFile(dir, "system/mpmSchemes");
     const std::string schemeName = schemes.getOrDefault<std::string>("updateScheme", "USL");
     const std::string shapeName = schemes.getOrDefault<std::string>("shapeFunction", "bilinear");
-    const double flipFraction = schemes.found("flipFraction")
-                                    ? schemes.getChecked<double>(
-                                          "flipFraction", [](const double& f) { return f >= 0.0 && f <= 1.0; },
-                                          "0 <= flipFraction <= 1 (1: FLIP, the seed's eq. 2.4.8; 0: PIC)")
-                                    : 1.0;
+    const std::string transferName = schemes.getOrDefault<std::string>("transfer", "FLIP");
+    // A keyword of another transfer is a mistake, not a default to ignore.
+    for (const char* k : {"flipFraction", "flipRelaxationTime"})
+        if (schemes.found(k) && transferName != "FLIP")
+            schemes.fail(k, std::string(k) + " belongs to transfer FLIP, not " + transferName);
+    if (schemes.found("xpicOrder") && transferName != "XPIC")
+        schemes.fail("xpicOrder", "xpicOrder belongs to transfer XPIC, not " + transferName);
     // particle: each particle's own dilatation (the seed); cellMean: CellMeanDilatation.H
     const std::string volumetricStrain = schemes.getWordOrDefault("volumetricStrain", {"particle", "cellMean"}, "particle");
     sortInterval_ = schemes.getOrDefault<long>("sortInterval", 100);
     if (sortInterval_ < 0) schemes.fail("sortInterval", "sortInterval must be >= 0 (0: never sort)");
     scheme_ = Registry<UpdateScheme>::select(schemeName, schemes, schemes, "updateScheme");
     auto shape = Registry<ShapeFunction>::select(shapeName, schemes, schemes, "shapeFunction");
+    auto transfer = Registry<ParticleTransfer>::select(transferName, schemes, schemes, "transfer");
 
     Particles particles;
     std::vector<std::string> storedMaterials, bodyNames;
@@ -150,7 +153,7 @@ Simulation::Simulation(const RunOptions& options)
     if (dormantPolar) solver_->enableRotation();
     solver_->setGravity(readGravity(dir));
     solver_->setDamping(damping);
-    solver_->setFlipFraction(flipFraction);
+    solver_->setTransfer(std::move(transfer));
     solver_->setCellMeanDilatation(volumetricStrain == "cellMean");
     solver_->setTime(time_);
     if (solver_->hasRotation()) solver_->setRotationSides(readRotationSides(gridDict));

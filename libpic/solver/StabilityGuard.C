@@ -71,6 +71,7 @@ StabilityGuard::Survey StabilityGuard::survey() const
     const int bodies = static_cast<int>(rigid_.size());
     std::size_t invalid = n, outside = n;
     double kinetic = 0, work = 0, gravity = 0, speed2 = 0;
+    const bool affine = p.hasAffine();
     const long long count = static_cast<long long>(n);
     // Threads only where they pay: a parallel region costs microseconds.
 #pragma omp parallel for if (count > parallelFrom) schedule(static) reduction(min : invalid, outside) \
@@ -89,6 +90,7 @@ StabilityGuard::Survey StabilityGuard::survey() const
         speed2 = std::max(speed2, v2);
         if (!rigidBody || p.body[q] >= bodies || !rigidBody[p.body[q]]) {
             kinetic += 0.5 * p.m[q] * v2;
+            if (affine) kinetic += p.affineEnergy[q];  // APIC: the part C_p carries
             work += p.work[q];
             gravity += p.m[q] * g.dot(x);  // differences only: the work of gravity
         }

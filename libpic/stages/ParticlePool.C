@@ -18,6 +18,7 @@ void appendParticles(Particles& to, const Particles& from)
 {
     const std::size_t n0 = to.size(), n = from.size();
     for (const auto& h : from.historyNames()) to.declareHistory(h);
+    if (from.hasAffine()) to.enableAffine();
     to.resize(n0 + n);
     const auto copy = [&](auto& a, const auto& b) { std::copy(b.begin(), b.end(), a.begin() + n0); };
     copy(to.id, from.id); copy(to.body, from.body); copy(to.material, from.material);
@@ -26,6 +27,10 @@ void appendParticles(Particles& to, const Particles& from)
     copy(to.sigma, from.sigma); copy(to.eps, from.eps); copy(to.epsP, from.epsP); copy(to.work, from.work);
     copy(to.dEps, from.dEps); copy(to.dOmega, from.dOmega);
     for (const auto& h : from.historyNames()) copy(to.history(h), from.history(h));
+    if (from.hasAffine()) {  // else zero: C_p starts at rest
+        copy(to.affine, from.affine);
+        copy(to.affineEnergy, from.affineEnergy);
+    }
     if (from.polar.enabled()) {  // the Cosserat state of a polar scene
         to.polar.enable(n0 + n);
         copy(to.polar.w, from.polar.w); copy(to.polar.omega, from.polar.omega);

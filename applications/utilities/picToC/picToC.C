@@ -8,6 +8,7 @@
 #include "functionObjects/FunctionObject.H"
 #include "loads/ParticleLoad.H"
 #include "materials/Material.H"
+#include "schemes/ParticleTransfer.H"
 #include "schemes/UpdateScheme.H"
 #include "shapeFunctions/ShapeFunction.H"
 
@@ -30,6 +31,7 @@ int main(int argc, char** argv)
                                      list<gpic::ContactLaw>();
                                      list<gpic::ShapeFunction>();
                                      list<gpic::UpdateScheme>();
+                                     list<gpic::ParticleTransfer>();
                                      list<gpic::FunctionObject>();
                                      list<gpic::Shape>();
                                      list<gpic::RigidBodyDriver>();
