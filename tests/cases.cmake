@@ -29,7 +29,8 @@ foreach(tutorial "verification/elasticBar;bar.png;error.png"
                  "earthmoving/bucket;force.png;error.png;bucket.png"
                  "earthmoving/silos;mass.png;layers-end.png;error.png"
                  "materials/oedometerPoint;oedometer.png"
-                 "geotechnics/silo;flowRate.png;flowPattern-0.2.png;error.png")
+                 "geotechnics/silo;flowRate.png;flowPattern-0.2.png;error.png"
+                 "geotechnics/columnCollapse;deposit.png")
   list(GET tutorial 0 path)
   list(SUBLIST tutorial 1 -1 plots)
   string(REPLACE "/" "_" name "tutorial_${path}")

@@ -80,7 +80,7 @@ TEST(ShapeFunctions, uGimpGradientIsContinuousAcrossACellFaceWhereBilinearJumps)
 // Quadratic B-splines (QuadraticBSplineShape.H): the weights sum to one and their gradients
 // to zero everywhere, the sides included; inside (2.5 cells from a side) they reproduce
 // linear fields with the node positions and D_p = sum N (x_i - x_p)(x_i - x_p)^T = h^2/4 I
-// (APIC's inertia-like tensor); on a side only the side node has weight; the gradient is
+// (APIC's inertia-like tensor), and up to the sides about their Greville points; on a side only the side node has weight; the gradient is
 // continuous across cell faces.
 TEST(ShapeFunctions, quadraticBSplineSumsToOneUpToTheSidesAndIsExactInside)
 {
@@ -98,10 +98,12 @@ TEST(ShapeFunctions, quadraticBSplineSumsToOneUpToTheSidesAndIsExactInside)
     }
     const ShapeWeights w = weightsAt("quadraticBSpline", grid, xs);
     ASSERT_EQ(w.stride, 9);
+    Dictionary none;
+    const auto shape = Registry<ShapeFunction>::select("quadraticBSpline", none, none, "shapeFunction");
     int inside = 0;
     for (std::size_t q = 0; q < xs.size(); ++q) {
         double sumN = 0;
-        Vector2 sumGrad = Vector2::Zero(), reproduced = Vector2::Zero();
+        Vector2 sumGrad = Vector2::Zero(), reproduced = Vector2::Zero(), aboutCentres = Vector2::Zero();
         Eigen::Matrix2d gradX = Eigen::Matrix2d::Zero(), D = Eigen::Matrix2d::Zero();
         for (int a = 0; a < w.stride; ++a) {
             const std::size_t k = q * w.stride + a;
@@ -111,11 +113,14 @@ TEST(ShapeFunctions, quadraticBSplineSumsToOneUpToTheSidesAndIsExactInside)
             sumN += w.N[k];
             sumGrad += w.dN[k];
             reproduced += w.N[k] * xi;
+            aboutCentres += w.N[k] * shape->affineCentre(grid, w.node[k]);
             gradX += xi * w.dN[k].transpose();
             D += w.N[k] * (xi - xs[q]) * (xi - xs[q]).transpose();
         }
         EXPECT_NEAR(sumN, 1.0, 1e-12) << xs[q].transpose();
         EXPECT_NEAR(sumGrad.norm(), 0.0, 1e-10) << xs[q].transpose();
+        // Linear fields everywhere about the Greville points (APIC's affine terms).
+        EXPECT_NEAR((aboutCentres - xs[q]).norm(), 0.0, 1e-12) << xs[q].transpose();
         const Vector2 u = (xs[q] - grid.origin()).cwiseQuotient(h);
         if (u.x() < 2.5 || u.x() > 5.5 || u.y() < 2.5 || u.y() > 7.5) continue;
         ++inside;

@@ -49,6 +49,13 @@ void QuadraticBSplineShape::weight1D(int i, double u, int n, double& S, double& 
     dS = 2.0 * (left - right);
 }
 
+Vector2 QuadraticBSplineShape::affineCentre(const Grid& grid, int n) const
+{
+    const int i = n % (grid.nx() + 1), j = n / (grid.nx() + 1);
+    const auto greville = [](int k, int cells) { return 0.5 * (knot(k + 1, cells) + knot(k + 2, cells)); };
+    return grid.origin() + Vector2(greville(i, grid.nx()) * grid.cellSize().x(), greville(j, grid.ny()) * grid.cellSize().y());
+}
+
 void QuadraticBSplineShape::evaluate(const Grid& grid, const Particles& p, ShapeWeights& w) const
 {
     if (grid.nx() < 2 || grid.ny() < 2)

@@ -24,6 +24,9 @@ void MpmSolver::setTransfer(std::unique_ptr<ParticleTransfer> transfer)
     transfer_ = std::move(transfer);
     if (transfer_->affine()) particles_.enableAffine();
     else particles_.disableAffine();
+    affineCentre_.clear();
+    if (transfer_->affine())
+        for (int n = 0; n < grid_.nNodes(); ++n) affineCentre_.push_back(shape_->affineCentre(grid_, n));
     filtered_.clear();
     filterScratch_.clear();
 }
@@ -612,8 +615,8 @@ void MpmSolver::gridToParticles(double dt)
     const auto nParticles = static_cast<long>(p.size());
     const double flip = transfer_->flipShare(dt);
     const bool affine = p.hasAffine(), affineFromGradient = shape_->affineFromGradient();
-    long firstBad = nParticles;
-#pragma omp parallel for schedule(static) reduction(min : firstBad) if (nParticles >= minParallelWork())
+    long firstBad = nParticles, returned = 0;
+#pragma omp parallel for schedule(static) reduction(min : firstBad) reduction(+ : returned) if (nParticles >= minParallelWork())
     for (long q = 0; q < nParticles; ++q) {
         if (driverOf(q)) continue;  // moved below
         Vector2 vNew = Vector2::Zero(), a = Vector2::Zero(), vStar = Vector2::Zero();
@@ -632,7 +635,7 @@ void MpmSolver::gridToParticles(double dt)
             a += N * accel[n];
             if (star) vStar += N * (*star)[n];
             if (!affine) continue;
-            const Vector2 r = grid_.nodePosition(n) - p.x[q];
+            const Vector2 r = affineCentre_[n] - p.x[q];
             D.noalias() += (N * r) * r.transpose();  // D_p, h^2/4 I inside a B-spline grid
             // bilinear: B_p D_p^-1 is the velocity gradient (D_p singular on a grid line)
             if (affineFromGradient) B.noalias() += velocity[n] * weights_.dN[k0 + k].transpose();
@@ -650,7 +653,9 @@ void MpmSolver::gridToParticles(double dt)
         // its nodes) then decays instead of persisting. PIC and APIC: share 0.
         else p.v[q] = flip * (p.v[q] + dt * a) + (1.0 - flip) * vNew;
         if (!std::isfinite(p.v[q].x() + p.v[q].y())) firstBad = std::min(firstBad, q);
+        if (!grid_.contains(p.x[q]) && keepInsideWalls(static_cast<std::size_t>(q))) ++returned;
     }
+    wallReturns_ += static_cast<std::size_t>(returned);
     for (std::size_t q : rigidParticles_) {  // drivers cache their motion: serial
         const RigidBodyDriver* body = driverOf(q);
         p.x[q] = body->move(time_, dt, p.x[q]);
@@ -765,6 +770,29 @@ bool MpmSolver::leftThroughOpening(const Vector2& x) const
     };
     return (x.x() < low.x() && open(GridSide::left)) || (x.x() > high.x() && open(GridSide::right)) ||
            (x.y() < low.y() && open(GridSide::bottom)) || (x.y() > high.y() && open(GridSide::top));
+}
+
+bool MpmSolver::keepInsideWalls(std::size_t q)
+{
+    Particles& p = particles_;
+    Vector2& x = p.x[q];
+    if (!std::isfinite(x.x()) || !std::isfinite(x.y())) return false;
+    const Vector2 low = grid_.origin(), high = grid_.upper(), h = grid_.cellSize();
+    bool moved = false;
+    for (int s = 0; s < 4; ++s) {
+        const BoundaryCondition& bc = *boundaries_[s];
+        const int axis = s == static_cast<int>(GridSide::left) || s == static_cast<int>(GridSide::right) ? 0 : 1;
+        const bool lowSide = s == static_cast<int>(GridSide::left) || s == static_cast<int>(GridSide::bottom);
+        const double side = lowSide ? low[axis] : high[axis];
+        const double past = lowSide ? side - x[axis] : x[axis] - side;
+        // Only a small overshoot through a closed wall: anything larger is left for the
+        // stability guard to report, and an open stretch lets the particle go.
+        if (!(past > 0.0) || past > 0.5 * h[axis] || !bc.isWall() || bc.isOpen(bc.along(x))) continue;
+        x[axis] = side;
+        if (lowSide ? p.v[q][axis] < 0.0 : p.v[q][axis] > 0.0) p.v[q][axis] = 0.0;
+        moved = true;
+    }
+    return moved;
 }
 
 std::size_t MpmSolver::removeOutflow()

@@ -407,6 +407,9 @@ long Simulation::run()
     log() << guard_->snapshots() << " copies of the last good state, "
           << (guard_->snapshots() > 0 ? 1e3 * guard_->snapshotSeconds() / guard_->snapshots() : 0.0)
           << " ms each\n";
+    if (solver_->wallReturns() > 0)
+        log() << "Walls: " << solver_->wallReturns()
+              << " particle positions put back on a wall side they had passed by less than half a cell\n";
     solver_->timers().print(log());
     return steps;
 }
