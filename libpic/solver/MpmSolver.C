@@ -777,6 +777,7 @@ bool MpmSolver::keepInsideWalls(std::size_t q)
     Particles& p = particles_;
     Vector2& x = p.x[q];
     if (!std::isfinite(x.x()) || !std::isfinite(x.y())) return false;
+    if (hasOutlet_ && leftThroughOpening(x)) return false;  // removeOutflow takes it
     const Vector2 low = grid_.origin(), high = grid_.upper(), h = grid_.cellSize();
     bool moved = false;
     for (int s = 0; s < 4; ++s) {
@@ -787,7 +788,7 @@ bool MpmSolver::keepInsideWalls(std::size_t q)
         const double past = lowSide ? side - x[axis] : x[axis] - side;
         // Only a small overshoot through a closed wall: anything larger is left for the
         // stability guard to report, and an open stretch lets the particle go.
-        if (!(past > 0.0) || past > 0.5 * h[axis] || !bc.isWall() || bc.isOpen(bc.along(x))) continue;
+        if (!(past > 0.0) || past > 0.5 * h[axis] || !bc.isWall()) continue;
         x[axis] = side;
         if (lowSide ? p.v[q][axis] < 0.0 : p.v[q][axis] > 0.0) p.v[q][axis] = 0.0;
         moved = true;
