@@ -170,3 +170,20 @@ TEST(ShapeFunctions, quadraticBSplineGradientIsContinuousAcrossFacesAndKnots)
         }
     }
 }
+
+TEST(ShapeFunctions, quadraticBSplineIsLinearAcrossAnAxisOfOneCell)
+{
+    const Grid grid(Vector2(0, 0), Vector2(1, 0.5), 6, 1);  // a bar one cell thick
+    const ShapeWeights w = weightsAt("quadraticBSpline", grid, {{2.3, 0.1}, {5.9, 0.45}});
+    for (int q = 0; q < 2; ++q) {
+        double sumN = 0, sumY = 0;
+        for (int a = 0; a < 9; ++a) {
+            const std::size_t k = static_cast<std::size_t>(q * 9 + a);
+            if (w.node[k] < 0) continue;
+            sumN += w.N[k];
+            sumY += w.N[k] * grid.nodePosition(w.node[k]).y();
+        }
+        EXPECT_NEAR(sumN, 1.0, 1e-12);
+        EXPECT_NEAR(sumY, q == 0 ? 0.1 : 0.45, 1e-12);
+    }
+}

@@ -1,7 +1,6 @@
 #include "shapeFunctions/QuadraticBSplineShape.H"
 
 #include "core/Threads.H"
-#include "core/error.H"
 
 #include <algorithm>
 #include <cmath>
@@ -36,11 +35,16 @@ double linear(double u, double a, double b, double c, int n)
 
 int QuadraticBSplineShape::firstNode(double u, int n)
 {
-    return std::clamp(static_cast<int>(std::floor(u - 0.5)), 0, n - 2);
+    return n < 2 ? 0 : std::clamp(static_cast<int>(std::floor(u - 0.5)), 0, n - 2);
 }
 
 void QuadraticBSplineShape::weight1D(int i, double u, int n, double& S, double& dS)
 {
+    if (n == 1) {  // one cell across (a bar, a layer): the linear splines of its two nodes
+        S = i == 0 ? 1.0 - u : (i == 1 ? u : 0.0);
+        dS = i == 0 ? -1.0 : (i == 1 ? 1.0 : 0.0);
+        return;
+    }
     // Cox-de Boor on knots t0..t3 of node i; a zero-length span contributes nothing.
     const double t0 = knot(i, n), t1 = knot(i + 1, n), t2 = knot(i + 2, n), t3 = knot(i + 3, n);
     const double left = t2 > t0 ? linear(u, t0, t1, t2, n) / (t2 - t0) : 0.0;
@@ -52,14 +56,12 @@ void QuadraticBSplineShape::weight1D(int i, double u, int n, double& S, double& 
 Vector2 QuadraticBSplineShape::affineCentre(const Grid& grid, int n) const
 {
     const int i = n % (grid.nx() + 1), j = n / (grid.nx() + 1);
-    const auto greville = [](int k, int cells) { return 0.5 * (knot(k + 1, cells) + knot(k + 2, cells)); };
+    const auto greville = [](int k, int cells) { return cells == 1 ? double(k) : 0.5 * (knot(k + 1, cells) + knot(k + 2, cells)); };
     return grid.origin() + Vector2(greville(i, grid.nx()) * grid.cellSize().x(), greville(j, grid.ny()) * grid.cellSize().y());
 }
 
 void QuadraticBSplineShape::evaluate(const Grid& grid, const Particles& p, ShapeWeights& w) const
 {
-    if (grid.nx() < 2 || grid.ny() < 2)
-        throw RunError("shapeFunction quadraticBSpline needs at least 2 cells along each axis of the grid");
     w.resize(p.size(), 9);
     const Vector2 h = grid.cellSize();
     const auto n = static_cast<long>(p.size());
@@ -75,9 +77,11 @@ void QuadraticBSplineShape::evaluate(const Grid& grid, const Particles& p, Shape
         std::size_t k = q * 9;
         for (int b = 0; b < 3; ++b)
             for (int a = 0; a < 3; ++a, ++k) {
-                w.node[k] = grid.node(i0 + a, j0 + b);
-                w.N[k] = Sx[a] * Sy[b];
-                w.dN[k] = Vector2(dSx[a] * Sy[b] / h.x(), Sx[a] * dSy[b] / h.y());
+                // One cell across an axis: its third slot has no node.
+                const bool exists = i0 + a <= grid.nx() && j0 + b <= grid.ny();
+                w.node[k] = exists ? grid.node(i0 + a, j0 + b) : -1;
+                w.N[k] = exists ? Sx[a] * Sy[b] : 0.0;
+                w.dN[k] = exists ? Vector2(dSx[a] * Sy[b] / h.x(), Sx[a] * dSy[b] / h.y()) : Vector2::Zero();
             }
     }
 }

@@ -31,6 +31,28 @@ void MpmSolver::setTransfer(std::unique_ptr<ParticleTransfer> transfer)
     filterScratch_.clear();
 }
 
+void MpmSolver::formAffine(std::size_t q, const std::vector<Vector2>& velocity, const Vector2& xp)
+{
+    Particles& p = particles_;
+    const int stride = weights_.stride;
+    const std::size_t k0 = q * stride;
+    const bool fromGradient = shape_->affineFromGradient();
+    Eigen::Matrix2d B = Eigen::Matrix2d::Zero(), D = Eigen::Matrix2d::Zero();
+    for (int k = 0; k < stride; ++k) {
+        const int n = weights_.node[k0 + k];
+        if (n < 0) continue;
+        const double N = weights_.N[k0 + k];
+        const Vector2 r = affineCentre_[n] - xp;
+        D.noalias() += (N * r) * r.transpose();  // D_p, h^2/4 I inside a B-spline grid
+        // bilinear: B_p D_p^-1 is the velocity gradient (D_p singular on a grid line)
+        if (fromGradient) B.noalias() += velocity[n] * weights_.dN[k0 + k].transpose();
+        else B.noalias() += (N * velocity[n]) * r.transpose();  // B_p (Jiang et al. 2015)
+    }
+    Eigen::Matrix2d& C = p.affine[q];
+    C = fromGradient ? B : Eigen::Matrix2d(B * D.inverse());
+    p.affineEnergy[q] = 0.5 * p.m[q] * (C * D * C.transpose()).trace();
+}
+
 void MpmSolver::filterVelocity(double dt, int order)
 {
     auto timer = timers_.time("transferFilter");
@@ -614,13 +636,12 @@ void MpmSolver::gridToParticles(double dt)
     const int stride = weights_.stride;
     const auto nParticles = static_cast<long>(p.size());
     const double flip = transfer_->flipShare(dt);
-    const bool affine = p.hasAffine(), affineFromGradient = shape_->affineFromGradient();
+    const bool affine = p.hasAffine();
     long firstBad = nParticles, returned = 0;
 #pragma omp parallel for schedule(static) reduction(min : firstBad) reduction(+ : returned) if (nParticles >= minParallelWork())
     for (long q = 0; q < nParticles; ++q) {
         if (driverOf(q)) continue;  // moved below
         Vector2 vNew = Vector2::Zero(), a = Vector2::Zero(), vStar = Vector2::Zero();
-        Eigen::Matrix2d B = Eigen::Matrix2d::Zero(), D = Eigen::Matrix2d::Zero();
         const std::size_t k0 = q * stride;
         // With a contact pass each body moves with its own corrected field (seed G.4 steps 3-4).
         const BodyField* body = contact_ ? &contact_->field(p.body[q]) : nullptr;
@@ -634,18 +655,8 @@ void MpmSolver::gridToParticles(double dt)
             vNew += N * velocity[n];
             a += N * accel[n];
             if (star) vStar += N * (*star)[n];
-            if (!affine) continue;
-            const Vector2 r = affineCentre_[n] - p.x[q];
-            D.noalias() += (N * r) * r.transpose();  // D_p, h^2/4 I inside a B-spline grid
-            // bilinear: B_p D_p^-1 is the velocity gradient (D_p singular on a grid line)
-            if (affineFromGradient) B.noalias() += velocity[n] * weights_.dN[k0 + k].transpose();
-            else B.noalias() += (N * velocity[n]) * r.transpose();  // B_p (Jiang et al. 2015)
         }
-        if (affine) {
-            Eigen::Matrix2d& C = p.affine[q];
-            C = affineFromGradient ? B : Eigen::Matrix2d(B * D.inverse());
-            p.affineEnergy[q] = 0.5 * p.m[q] * (C * D * C.transpose()).trace();
-        }
+        if (affine) formAffine(static_cast<std::size_t>(q), velocity, p.x[q]);
         p.x[q] += dt * vNew;  // eq. 2.4.7
         if (star) p.v[q] = vStar + dt * a;  // XPIC: the filtered v^t plus the increment
         // eq. 2.4.8 (FLIP), blended with PIC when the FLIP share is below 1: a particle's own
@@ -719,6 +730,19 @@ void MpmSolver::remapVelocity(double dt)
     if (drivesRigidNodes()) constrainRigidNodes(time_ + dt);
     applyBoundaries(grid_.velocity);
     if (contact_) bodyVelocities(time_ + dt);
+    if (p.hasAffine()) {
+        // APIC: C_p again, from the remapped nodal velocity: a mass-weighted mean of the
+        // particles' motion, where v^{t+1} of a node that a particle barely touches holds
+        // dt F/m of a tiny mass (the small-mass instability, Sulsky et al. 1995).
+        const auto nParticles = static_cast<long>(p.size());
+        Particles& moved = particles_;
+#pragma omp parallel for schedule(static) if (nParticles >= minParallelWork())
+        for (long q = 0; q < nParticles; ++q) {
+            if (driverOf(q)) continue;
+            const std::vector<Vector2>& velocity = contact_ ? contact_->field(p.body[q]).velocity : grid_.velocity;
+            formAffine(static_cast<std::size_t>(q), velocity, moved.x[q] - dt * moved.v[q]);
+        }
+    }
     if (hasRotation_) remapRotation();
 }
 

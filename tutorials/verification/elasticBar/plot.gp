@@ -13,4 +13,5 @@ set xlabel 'wall time [s]'
 set ylabel 'max error / amplitude'
 set title 'Elastic bar: error against run time (ladder of resolutions)'
 plot 'errors.dat' using (strcol(1) eq 'uGIMP' ? $5 : NaN):6 with linespoints pt 7 title 'uGIMP', \
+     'errors.dat' using (strcol(1) eq 'quadraticBSpline' ? $5 : NaN):6 with linespoints pt 9 title 'quadraticBSpline', \
      'errors.dat' using (strcol(1) eq 'bilinear' ? $5 : NaN):6 with linespoints pt 5 title 'bilinear (seed)'
