@@ -7,6 +7,7 @@
 #include "io/ParticlesVtk.H"
 #include "io/TimeDirectories.H"
 #include "support/CaseRunner.H"
+#include "support/ThreadRuns.H"
 
 #include <omp.h>
 
@@ -33,16 +34,6 @@ void columnCase(const fs::path& dir, const std::string& scheme, double endTime)
     writeDictionary(dir / "constant/g", "value (0 -9.81);\n");
 }
 
-template <class T> void expectBitwise(const std::vector<T>& a, const std::vector<T>& b, const char* name)
-{
-    ASSERT_EQ(a.size(), b.size()) << name;
-    for (std::size_t i = 0; i < a.size(); ++i)
-        if (std::memcmp(&a[i], &b[i], sizeof(T)) != 0) {
-            ADD_FAILURE() << name << " differs first at particle " << i << " of " << a.size();
-            return;
-        }
-}
-
 void expectSame(const Particles& a, const Particles& b)
 {
     ASSERT_TRUE(a.polar.enabled());
@@ -60,18 +51,6 @@ void expectSame(const Particles& a, const Particles& b)
     expectBitwise(a.history("epsPs"), b.history("epsPs"), "epsPs");
 }
 
-Particles runWith(const fs::path& dir, int threads)
-{
-    const int saved = omp_get_max_threads();
-    const long savedWork = minParallelWork();
-    omp_set_num_threads(threads);
-    minParallelWork() = 0;  // thread even this small scene
-    auto simulation = runAndKeep(dir);
-    omp_set_num_threads(saved);
-    minParallelWork() = savedWork;
-    return simulation->solver().particles();
-}
-
 double largest(const std::vector<double>& a)
 {
     double m = 0;
@@ -87,7 +66,7 @@ TEST(CosseratRun, aPolarSceneIsTheSameAtOneAndTwoThreads)
         ScratchDir scratch("cosseratThreads");
         columnCase(scratch.path() / "one", scheme, 1e-3);
         columnCase(scratch.path() / "two", scheme, 1e-3);
-        const Particles one = runWith(scratch.path() / "one", 1), two = runWith(scratch.path() / "two", 2);
+        const Particles one = runAtThreads(scratch.path() / "one", 1), two = runAtThreads(scratch.path() / "two", 2);
         EXPECT_GT(largest(one.polar.w), 0.0) << "the column turns its grains";
         EXPECT_GT(largest(one.history("yieldState")), 0.0) << "and yields";
         expectSame(one, two);

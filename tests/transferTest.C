@@ -14,6 +14,7 @@
 #include "shapeFunctions/ShapeFunction.H"
 #include "support/Applications.H"
 #include "support/CaseRunner.H"
+#include "support/ThreadRuns.H"
 
 #include <omp.h>
 
@@ -233,29 +234,6 @@ void bladeCase(const fs::path& dir, const std::string& extra = "")
                     "}\n");
 }
 
-template <class V>
-void expectBitwise(const V& a, const V& b, const char* name)
-{
-    ASSERT_EQ(a.size(), b.size()) << name;
-    for (std::size_t i = 0; i < a.size(); ++i)
-        if (std::memcmp(&a[i], &b[i], sizeof(a[i])) != 0) {
-            ADD_FAILURE() << name << " differs first at particle " << i << " of " << a.size();
-            return;
-        }
-}
-
-Particles runBladeWith(const fs::path& dir, int threads)
-{
-    const int saved = omp_get_max_threads();
-    const long savedWork = minParallelWork();
-    omp_set_num_threads(threads);
-    minParallelWork() = 0;  // thread even this small scene
-    auto simulation = runAndKeep(dir);
-    omp_set_num_threads(saved);
-    minParallelWork() = savedWork;
-    return simulation->solver().particles();
-}
-
 } // namespace
 
 TEST(Transfer, apicWithContactAndStagesIsTheSameAtOneAndTwoThreads)
@@ -263,7 +241,7 @@ TEST(Transfer, apicWithContactAndStagesIsTheSameAtOneAndTwoThreads)
     ScratchDir scratch("apicThreads");
     bladeCase(scratch.path() / "one");
     bladeCase(scratch.path() / "two");
-    const Particles one = runBladeWith(scratch.path() / "one", 1), two = runBladeWith(scratch.path() / "two", 2);
+    const Particles one = runAtThreads(scratch.path() / "one", 1), two = runAtThreads(scratch.path() / "two", 2);
     ASSERT_TRUE(one.hasAffine());
     ASSERT_GT(one.size(), 100u);
     expectBitwise(one.x, two.x, "x");
