@@ -58,7 +58,7 @@ fs::path writeCase(const ScratchDir& scratch, const std::string& name, const std
     std::ofstream(dir / "system/controlDict")
         << "endTime " << endTime << ";\ndeltaT 1e-3;\nwriteControl adjustableRunTime;\nwriteInterval " << endTime
         << ";\nfunctions { loads { type testLoadRecorder; } }\n";
-    std::ofstream(dir / "system/mpmSchemes") << "updateScheme USF;\n";
+    std::ofstream(dir / "system/mpmSchemes") << "updateScheme USF; transfer FLIP;\n";  // the seed's update
     std::ofstream(dir / "constant/grid")
         << "origin (0 0);\ncellSize 0.05;\nnCells (16 12);\n"
         << "boundaries { left { type free; } right { type free; } bottom { type " << bottom

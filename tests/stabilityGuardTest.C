@@ -94,7 +94,8 @@ void writeScene(const fs::path& dir, const Scene& s)
         << header << "endTime " << endTime << ";\ndeltaT 1;\nadjustTimeStep yes;\nmaxCourant 0.5;\n"
         << "writeControl adjustableRunTime;\nwriteInterval " << endTime / 4 << ";\nprogressInterval 1000;\n"
         << s.controlExtra << "\n";
-    std::ofstream(dir / "system/mpmSchemes") << header << "updateScheme " << s.scheme << ";\n";
+    // The seed's FLIP: a free elastic body keeps its vibration energy (the default relaxes it).
+    std::ofstream(dir / "system/mpmSchemes") << header << "updateScheme " << s.scheme << "; transfer FLIP;\n";
     std::ofstream(dir / "constant/grid")
         << header << "origin (0 0);\ncellSize " << h << ";\nnCells (40 40);\n"
         << "boundaries { left { type free; } right { type free; } bottom { type free; } top { type free; } }\n";

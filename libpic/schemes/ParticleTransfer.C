@@ -22,6 +22,10 @@ FlipTransfer::FlipTransfer(const Dictionary& schemes)
     if (schemes.found("flipRelaxationTime"))
         relaxationTime_ = schemes.getChecked<double>("flipRelaxationTime", [](const double& t) { return t > 0.0; },
                                                      "flipRelaxationTime > 0 [s]");
+    // No transfer named at all: the default, which lets a particle's own velocity relax.
+    // `transfer FLIP;` alone is the seed's pure FLIP.
+    else if (!schemes.found("transfer") && !schemes.found("flipFraction"))
+        relaxationTime_ = defaultRelaxationTime;
 }
 
 double FlipTransfer::flipShare(double dt) const

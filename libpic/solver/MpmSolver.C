@@ -1,8 +1,9 @@
 #include "solver/MpmSolver.H"
 
 #include "core/Threads.H"
-#include <Eigen/LU>
 #include "core/error.H"
+
+#include <Eigen/LU>
 
 #include <algorithm>
 #include <cmath>
@@ -138,7 +139,7 @@ MpmSolver::MpmSolver(Grid grid, Particles particles,
                      std::array<std::unique_ptr<BoundaryCondition>, 4> boundaries)
     : grid_(std::move(grid)), particles_(std::move(particles)), materials_(std::move(materials)),
       shape_(std::move(shape)), boundaries_(std::move(boundaries)), strips_(grid_),
-      transfer_(std::make_unique<FlipTransfer>(Dictionary{}))
+      transfer_(std::make_unique<FlipTransfer>(Dictionary::parse("transfer FLIP;", "the seed's FLIP")))
 {
     // Constrained side nodes: an opening's nodes are left free.
     for (int s = 0; s < 4; ++s) {

@@ -106,7 +106,9 @@ Simulation::Simulation(const RunOptions& options)
 
     Dictionary schemes;
     if (fs::exists(fs::path(dir) / "system/mpmSchemes")) schemes = readCaseFile(dir, "system/mpmSchemes");
-    const std::string schemeName = schemes.getOrDefault<std::string>("updateScheme", "USL");
+    // The defaults a new user gets run long granular flows to their end (doc/stability.md,
+    // "Transfers"): MUSL, and FLIP with PIC blended in over flipRelaxationTime 0.02 s.
+    const std::string schemeName = schemes.getOrDefault<std::string>("updateScheme", "MUSL");
     const std::string shapeName = schemes.getOrDefault<std::string>("shapeFunction", "bilinear");
     const std::string transferName = schemes.getOrDefault<std::string>("transfer", "FLIP");
     // A keyword of another transfer is a mistake, not a default to ignore.
