@@ -23,13 +23,18 @@ inline double contract(const SymTensor& s, const SymTensor& e)
 void MpmSolver::setTransfer(std::unique_ptr<ParticleTransfer> transfer)
 {
     transfer_ = std::move(transfer);
-    if (transfer_->affine()) particles_.enableAffine();
-    else particles_.disableAffine();
+    matchAffine();
     affineCentre_.clear();
     if (transfer_->affine())
         for (int n = 0; n < grid_.nNodes(); ++n) affineCentre_.push_back(shape_->affineCentre(grid_, n));
     filtered_.clear();
     filterScratch_.clear();
+}
+
+void MpmSolver::matchAffine()
+{
+    if (transfer_->affine()) particles_.enableAffine();  // C_p zero for particles that had none
+    else particles_.disableAffine();
 }
 
 void MpmSolver::formAffine(std::size_t q, const std::vector<Vector2>& velocity, const Vector2& xp)
@@ -736,12 +741,11 @@ void MpmSolver::remapVelocity(double dt)
         // particles' motion, where v^{t+1} of a node that a particle barely touches holds
         // dt F/m of a tiny mass (the small-mass instability, Sulsky et al. 1995).
         const auto nParticles = static_cast<long>(p.size());
-        Particles& moved = particles_;
 #pragma omp parallel for schedule(static) if (nParticles >= minParallelWork())
         for (long q = 0; q < nParticles; ++q) {
             if (driverOf(q)) continue;
             const std::vector<Vector2>& velocity = contact_ ? contact_->field(p.body[q]).velocity : grid_.velocity;
-            formAffine(static_cast<std::size_t>(q), velocity, moved.x[q] - dt * moved.v[q]);
+            formAffine(static_cast<std::size_t>(q), velocity, p.x[q] - dt * p.v[q]);
         }
     }
     if (hasRotation_) remapRotation();

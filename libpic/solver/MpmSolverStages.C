@@ -14,8 +14,7 @@ void MpmSolver::replaceParticles(Particles particles)
         throw RunError("the applied loads of constant/loads hold particle indices: a stage may not "
                        "add or remove particles in a case with loads");
     particles_ = std::move(particles);
-    if (transfer_->affine()) particles_.enableAffine();  // C_p zero for particles new to the scene
-    else particles_.disableAffine();
+    matchAffine();
     for (const auto& m : materials_)
         for (const auto& h : m->historyNames()) particles_.declareHistory(h);
     // The same order as the constructor makes of a time directory holding these particles:
