@@ -29,7 +29,7 @@ std::unique_ptr<Material> material(const std::string& body)
 Particles point(const Material& m, double p0, bool polar)
 {
     Particles p;
-    p.add(Vector2::Zero(), 1.0, 1.0, Vector2(0.5, 0.5), 0, 0);
+    p.add(Vector2::Zero(), m.rho(), 1.0, Vector2(0.5, 0.5), 0, 0);  // packed: m = rho V
     for (const auto& h : m.historyNames()) p.declareHistory(h);
     if (polar) p.polar.enable(1);
     p.sigma[0] = SymTensor(p0, p0, p0, 0.0);

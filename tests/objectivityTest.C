@@ -24,7 +24,7 @@ struct Point {
     Point(const std::string& entries, const SymTensor& sigma0)
         : m(Material::New(Dictionary::parse(entries, "constant/materials/soil")))
     {
-        p.add(Vector2::Zero(), 1.0, 1.0, Vector2::Constant(0.5), 0, 0);
+        p.add(Vector2::Zero(), m->rho(), 1.0, Vector2::Constant(0.5), 0, 0);  // packed: m = rho V
         for (const auto& h : m->historyNames()) p.declareHistory(h);
         p.sigma[0] = sigma0;
     }

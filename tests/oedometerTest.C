@@ -62,7 +62,7 @@ Run oedometer(double psiDeg)
                                      "constant/materials/oedometer");
     auto m = Material::New(d);
     Particles p;
-    p.add(Vector2::Zero(), 1.0, 1.0, Vector2::Constant(0.5), 0, 0);
+    p.add(Vector2::Zero(), m->rho(), 1.0, Vector2::Constant(0.5), 0, 0);  // packed: m = rho V
     for (const auto& h : m->historyNames()) p.declareHistory(h);
     const double V = -10, dt = 1e-6, L = 1;
     Run r;

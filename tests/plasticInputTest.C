@@ -135,3 +135,15 @@ TEST(PlasticInput, documentedExamplesBuild)
           "type mohrCoulomb; rho 1800; E 20e6; nu 0.3; phi 30; cTable ((0 30e3) (0.05 10e3));"})
         EXPECT_NO_THROW(build(entries)) << entries;
 }
+
+TEST(PlasticInput, rhoDisconnectedBelowTheDensity)
+{
+    const std::string dp = "type druckerPrager; rho 2000; K 2e7; G 1e7; phi 30; c 0; fit planeStrain;\n";
+    const std::string polar = "type cosseratDruckerPrager; rho 2000; G 1e7; nu 0.2; l 0.01; phi 30;\n";
+    const std::string mc = "type mohrCoulomb; rho 2000; K 2e7; G 1e7; phi 30; c 0;\n";
+    for (const std::string& model : {mc, dp, polar}) {
+        expectInputError(model + "rhoDisconnected 2000;", 5, {"'rhoDisconnected'", "0 <= rhoDisconnected < rho (2000"});
+        expectInputError(model + "rhoDisconnected -1;", 5, {"'rhoDisconnected'", "0 keeps the grains in contact"});
+        EXPECT_NO_THROW(build(model + "rhoDisconnected 0;"));
+    }
+}

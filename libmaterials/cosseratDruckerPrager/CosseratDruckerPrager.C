@@ -40,7 +40,7 @@ CosseratDruckerPrager::CosseratDruckerPrager(const Dictionary& dict)
       a2_(coefficient(dict, "a2", 0.125)),
       a3_(coefficient(dict, "a3", 1.0)),
       elastic_(dict, defaultGc(dict, a1_, a2_)),
-      alpha_(0), beta_(0), c_(0), tolerance_(1e-6)
+      alpha_(0), beta_(0), c_(0), tolerance_(1e-6), grains_(dict, rho())
 {
     if (std::abs(a1_ + a2_ - 0.5) > 1e-12)
         dict.fail(dict.found("a2") ? "a2" : "a1", "keyword 'a1'/'a2' in dictionary " + dict.name() +
@@ -138,6 +138,13 @@ void CosseratDruckerPrager::updateStress(Particles& p, const ParticleBlock& bloc
     CosseratParticles& c = p.polar;
     const double l = elastic_.l();
     for (std::size_t i = block.begin; i < block.end; ++i) {
+        if (grains_.lost(p.m[i], p.V[i])) {
+            p.sigma[i] = SymTensor::Zero();
+            c.sigma21[i] = 0;
+            c.mu[i].setZero();
+            state[i] = code(YieldState::disconnected);
+            continue;
+        }
         CosseratElasticity::rotate(p.sigma[i], c.sigma21[i], c.mu[i], p.dOmega[i]);
         elastic_.addElasticIncrement(p.sigma[i], c.sigma21[i], c.mu[i], p.dEps[i], c.dRotation[i], c.dKappa[i]);
         CosseratVector s = cosseratStress(p, i, l);

@@ -33,7 +33,7 @@ std::string number(double v)
 
 DruckerPrager::DruckerPrager(const Dictionary& dict)
     : Material(dict), elastic_(dict), qPhi_(0), kPhi_(0), qPsi_(0),
-      sigmaT_(std::numeric_limits<double>::infinity())
+      sigmaT_(std::numeric_limits<double>::infinity()), grains_(dict, rho())
 {
     const auto nonNegative = [](const char* key) { return std::string(key) + " >= 0"; };
     const auto isNonNegative = [](const double& v) { return v >= 0; };
@@ -102,6 +102,11 @@ void DruckerPrager::updateStress(Particles& p, const ParticleBlock& block, doubl
     auto& epsPs = p.history("epsPs");
     for (std::size_t i = block.begin; i < block.end; ++i) {
         SymTensor& s = p.sigma[i];
+        if (grains_.lost(p.m[i], p.V[i])) {
+            s = SymTensor::Zero();
+            state[i] = code(YieldState::disconnected);
+            continue;
+        }
         rotateJaumann(s, p.dOmega[i]);
         elastic_.addElasticIncrement(s, p.dEps[i]);  // sigma_I, eq. H.2.1
 

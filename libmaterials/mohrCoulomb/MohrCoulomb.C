@@ -75,6 +75,7 @@ MohrCoulomb::MohrCoulomb(const Dictionary& dict)
                     "0 <= psi <= phi (degrees)", 0.0)),
       c_(property(dict, "c", "cTable", [](double v) { return v >= 0; }, "c >= 0")),
       return_(elastic_.alpha1(), elastic_.alpha2()),
+      grains_(dict, rho()),
       constant_(true)
 {
     // psi <= phi everywhere: both are piecewise linear, so at every breakpoint of either.
@@ -153,6 +154,11 @@ void MohrCoulomb::updateStress(Particles& p, const ParticleBlock& block, double)
     unsigned activeSet = 0;  // the previous particle's return region, tried first
     for (std::size_t i = block.begin; i < block.end; ++i) {
         SymTensor& s = p.sigma[i];
+        if (grains_.lost(p.m[i], p.V[i])) {
+            s = SymTensor::Zero();
+            state[i] = code(YieldState::disconnected);
+            continue;
+        }
         rotateJaumann(s, p.dOmega[i]);
         elastic_.addElasticIncrement(s, p.dEps[i]);  // sigma_I, eq. H.2.1
 
