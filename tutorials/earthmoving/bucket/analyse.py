@@ -14,8 +14,8 @@ bucket:Fy, equals its weight m g (m: the mass of its particles, g: constant/g); 
 
 Usage: analyse.py <case> [-series] [-full] [-marks] [-post TAG]
 -series writes series.dat (travel [mm], F_x1, F_x2 [N/m]) and prints
-        F(50 mm) F(100 mm) F(end) Fy_mean m_g error_%   ('-' where not reached);
-        F(end): over the last 20 mm; Fy_mean: bucket:Fy over 50 mm ... the end.
+        F(50 mm) F(100 mm) F(end) Fy_mean m_g error_% Fx1_mean   ('-' where not reached);
+        F(end): over the last 20 mm; Fy_mean, Fx1_mean: bucket:Fy and F_x1 over 50 mm ... the end.
 -full   prints F_x1 every 100 mm, the seed's statement at 800 mm and the corn gone over the
         grid's top (the spill function object), if any.
 -marks  prints the travel reached [mm], then "mm F_x1" for every 100 mm mark reached (a
@@ -192,8 +192,9 @@ def main():
         end = max(travel)
         fy_mean = window_mean(t, fy, [x >= 0.05 for x in travel]) if end > 0.06 else None
         err = '-' if fy_mean is None else f'{(fy_mean - mg) / mg * 100:.2f}'
+        fx1_mean = window_mean(t, fx1, [x >= 0.05 for x in travel]) if end > 0.06 else None
         print(f'{fmt(at(t, fx1, travel, 0.05))} {fmt(at(t, fx1, travel, 0.1))} '
-              f'{fmt(at(t, fx1, travel, end - WINDOW))} {fmt(fy_mean)} {mg:.1f} {err}')
+              f'{fmt(at(t, fx1, travel, end - WINDOW))} {fmt(fy_mean)} {mg:.1f} {err} {fmt(fx1_mean)}')
     if '-full' in sys.argv:
         values = [(mm, at(t, fx1, travel, mm * 1e-3 - (WINDOW if mm == 800 else 0))) for mm in range(100, 900, 100)]
         print('draft force F_x1 [N/m] at ' + ', '.join(f'{mm}: {fmt(v)}' for mm, v in values))
