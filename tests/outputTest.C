@@ -2,6 +2,7 @@
 // with one part per kind of file, the optional grid, purgeWrite, and the function-object
 // file under postProcessing/<name>/<startTime>.
 #include "io/GridVtk.H"
+#include "io/ParticlesVtk.H"
 #include "io/PvdCollection.H"
 #include "io/TimeDirectories.H"
 #include "support/CaseRunner.H"
@@ -78,4 +79,29 @@ TEST(Output, picListTimesRemovesAllButTheStartAndTrimsTheIndex)
     ASSERT_EQ(std::system((app + " -rm > /dev/null").c_str()), 0);
     EXPECT_EQ(gpic::listTimeDirectories(dir.string()).size(), 1u);
     EXPECT_EQ(gpic::PvdCollection((dir / "twoDisks.pvd").string()).entries().size(), 1u);
+}
+
+TEST(Output, aTimePrecisionTooShortForTheWritesGetsMoreDigitsAndNoDirectoryIsReplaced)
+{
+    // timePrecision 1 with writes every 0.05 s: 0.15 would be named "0.2" (then replaced by
+    // the state of 0.2). Each time keeps its own directory, named within half a write
+    // interval of its time, and the index lists each once.
+    ScratchDir scratch("precision");
+    const fs::path dir = twoDisks(scratch);
+    setEntry(dir / "system/controlDict", "endTime", "0.2");
+    setEntry(dir / "system/controlDict", "writeInterval", "0.05");
+    setEntry(dir / "system/controlDict", "timePrecision", "1");
+    runCase(dir);
+    std::vector<std::string> names;
+    for (const auto& [t, name] : gpic::listTimeDirectories(dir.string())) {
+        names.push_back(name);
+        gpic::Particles p;
+        double time = -1;
+        gpic::readParticles((dir / name / "particles.vtp").string(), p, time);
+        EXPECT_NEAR(time, t, 1e-9) << name;  // the directory holds the state its name says
+    }
+    EXPECT_EQ(names, (std::vector<std::string>{"0", "0.05", "0.1", "0.15", "0.2"}));
+    const gpic::PvdCollection pvd((dir / "twoDisks.pvd").string());
+    ASSERT_EQ(pvd.entries().size(), 5u);
+    for (std::size_t k = 0; k < 5; ++k) EXPECT_EQ(pvd.entries()[k].file, names[k] + "/particles.vtp");
 }

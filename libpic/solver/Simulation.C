@@ -11,9 +11,11 @@
 #include "solver/CaseFiles.H"
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <iostream>
 #include <limits>
 #include <sstream>
@@ -261,10 +263,37 @@ void Simulation::writeState(const Particles& particles, double time, long step, 
     });
 }
 
+std::string Simulation::timeDirectoryName(double t)
+{
+    // A name fits when no other directory of this run has it and it reads back nearer t than
+    // the previous write (or the start): 0.15 is not written as "0.2" before 0.2 comes.
+    const double previous = written_.empty() ? std::stod(context_.startTimeName) : written_.back().first;
+    const auto fits = [&](const std::string& n) {
+        if (n == context_.startTimeName) return false;
+        for (const auto& w : written_)
+            if (w.second == n) return false;
+        return std::abs(std::stod(n) - t) <= 0.5 * std::abs(t - previous);
+    };
+    if (timeDigits_ == 0) timeDigits_ = timeControl_->timePrecision();
+    std::string name = timeName(t, timeDigits_);
+    if (fits(name)) return name;
+    const std::string unfit = name;
+    int digits = timeDigits_;
+    while (!fits(name) && digits < 17) name = timeName(t, ++digits);
+    if (!fits(name)) throw RunError("time " + std::to_string(t) + " s: no directory name of up to 17 digits is free");
+    std::ostringstream os;
+    os << "keyword 'timePrecision': " << timeDigits_ << " digits would name time " << std::setprecision(12) << t
+       << " s '" << unfit << "' (another time's name, or nearer another time); time directories get " << digits
+       << " digits from now on (raise timePrecision to keep their names alike)";
+    warning(controlDict_.fileName(), controlDict_.lineOf("timePrecision"), os.str());
+    timeDigits_ = digits;
+    return name;
+}
+
 void Simulation::write()
 {
     auto timer = solver_->timers().time("output");
-    const std::string name = timeName(time_, timeControl_->timePrecision());
+    const std::string name = timeDirectoryName(time_);
     const std::string& dir = options_.caseDir;
     writeState(solver_->particles(), time_, step_, deltaT_, name);
     onDisk_ = {time_, step_, name};
@@ -289,18 +318,7 @@ void Simulation::stop(const std::optional<StabilityTrip>& trip, const std::strin
         if (trip && trip->stateIsGood) {
             if (onDisk_.step != step_) write();
         } else if (const GoodState& good = guard_->lastGood(); good.step > onDisk_.step) {
-            // A time that rounds to the name of the start or of a write of this run (another
-            // state) gets more digits: the guard never replaces a directory.
-            const auto taken = [&](const std::string& n) {
-                if (n == context_.startTimeName) return true;
-                for (const auto& w : written_)
-                    if (w.second == n) return true;
-                return false;
-            };
-            std::string name = timeName(good.time, timeControl_->timePrecision());
-            for (int digits = timeControl_->timePrecision() + 1; taken(name) && digits <= 17; ++digits)
-                name = timeName(good.time, digits);
-            if (taken(name)) throw RunError("time " + name + " has a directory already");
+            const std::string name = timeDirectoryName(good.time);
             writeState(good.particles, good.time, good.step, good.deltaT, name);
             PvdCollection pvd(pvdPath(options_.caseDir));
             pvd.add(good.time, name + "/particles.vtp", 0);
