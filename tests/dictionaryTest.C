@@ -487,7 +487,7 @@ TEST(Dictionary, NumbersAreStrict)
 {
     const Dictionary d = Dictionary::parse(
         "a 1e7x;\nb 3.0;\nc 3;\nhuge 1e400;\nnotnum nan;\nbig 3000000000;\nneg -4;\n"
-        "two 1 2;\nq \"1\";\n", "f");
+        "two 1 2;\nq \"1\";\nE inf;\nminusInf -inf;\n", "f");
     EXPECT_ERROR_STARTS(d.get<double>("a"), "f:1: keyword 'a' in dictionary f: expected a number");
     EXPECT_EQ(errorOf([&] { d.get<int>("b"); }),
               "f:2: keyword 'b' in dictionary f: expected an integer, found '3.0'");
@@ -501,6 +501,8 @@ TEST(Dictionary, NumbersAreStrict)
     EXPECT_EQ(d.get<int>("neg"), -4);
     EXPECT_THROW(d.get<double>("two"), InputError);
     EXPECT_THROW(d.get<double>("q"), InputError);
+    EXPECT_EQ(errorOf([&] { d.get<double>("E"); }), "f:10: keyword 'E' in dictionary f: expected a number, found 'inf'");
+    EXPECT_THROW(d.get<double>("minusInf"), InputError);
 }
 
 TEST(Dictionary, Switches)

@@ -64,10 +64,9 @@ struct Reader {
         if (!single(s)) return false;
         const char* text = s.begin->text.c_str();
         char* end = nullptr;
-        errno = 0;
         x = std::strtod(text, &end);
-        const bool overflow = errno == ERANGE && std::isinf(x);
-        return end != text && *end == '\0' && !std::isnan(x) && !overflow;
+        // inf, nan and overflow are no input: `E inf` would pass every check of E > 0.
+        return end != text && *end == '\0' && std::isfinite(x);
     }
     bool read(Span s, long& x)
     {
