@@ -12,6 +12,7 @@
 #include "io/TimeDirectories.H"
 #include "materials/Material.H"
 #include "support/CaseRunner.H"
+#include "support/InitialState.H"
 
 #include <algorithm>
 #include <cmath>
@@ -68,18 +69,13 @@ Drop dropLoosePoint(const std::string& extra)
     writeDictionary(dir / "system/controlDict",
                     "endTime 0.03; deltaT 1; adjustTimeStep yes; maxCourant 0.5; writeControl adjustableRunTime; "
                     "writeInterval 0.0005; timePrecision 6;\n");
-    initialiseCase(dir.string());
-    Particles p;
-    double t = 0;
-    std::vector<std::string> materials, bodies;
-    const std::string start = (dir / "0/particles.vtp").string();
-    readParticles(start, p, t, &materials, &bodies);
-    EXPECT_EQ(p.size(), 1u);
-    p.x[0].y() = 0.0025 + 2e-5;  // just above the row whose lower nodes are fixed
-    p.V[0] *= 25;
-    p.halfSize[0] *= 5;
-    p.v[0] = Vector2(0.38, -0.47);
-    writeParticles(start, p, t, materials, bodies);
+    initialiseAndEdit(dir, [](Particles& p) {
+        EXPECT_EQ(p.size(), 1u);
+        p.x[0].y() = 0.0025 + 2e-5;  // just above the row whose lower nodes are fixed
+        p.V[0] *= 25;
+        p.halfSize[0] *= 5;
+        p.v[0] = Vector2(0.38, -0.47);
+    });
 
     Drop d;
     RunOptions options;

@@ -14,6 +14,7 @@
 #include "shapeFunctions/ShapeFunction.H"
 #include "support/Applications.H"
 #include "support/CaseRunner.H"
+#include "support/InitialState.H"
 #include "support/ThreadRuns.H"
 
 #include <omp.h>
@@ -73,18 +74,12 @@ Spin spinDisk(const std::string& transfer, const std::string& shape, int steps =
     writeDictionary(dir / "system/controlDict", "deltaT " + std::to_string(dt) + "; endTime " +
                                                     std::to_string(steps * dt) +
                                                     "; writeControl timeStep; writeInterval 100;\n");
-    initialiseCase(dir.string());
-    // A rigid rotation about the centre.
-    Particles p;
-    double t = 0;
-    std::vector<std::string> materials, bodies;
-    const std::string start = (dir / "0/particles.vtp").string();
-    readParticles(start, p, t, &materials, &bodies);
-    for (std::size_t q = 0; q < p.size(); ++q) {
-        const Vector2 r = p.x[q] - centre;
-        p.v[q] = omega0 * Vector2(-r.y(), r.x());
-    }
-    writeParticles(start, p, t, materials, bodies);
+    initialiseAndEdit(dir, [](Particles& p) {  // a rigid rotation about the centre
+        for (std::size_t q = 0; q < p.size(); ++q) {
+            const Vector2 r = p.x[q] - centre;
+            p.v[q] = omega0 * Vector2(-r.y(), r.x());
+        }
+    });
     RunOptions options;
     options.caseDir = dir.string();
     options.quiet = true;
