@@ -105,3 +105,26 @@ TEST(Output, aTimePrecisionTooShortForTheWritesGetsMoreDigitsAndNoDirectoryIsRep
     ASSERT_EQ(pvd.entries().size(), 5u);
     for (std::size_t k = 0; k < 5; ++k) EXPECT_EQ(pvd.entries()[k].file, names[k] + "/particles.vtp");
 }
+
+TEST(Output, aLastWriteJustAfterAnIntervalWriteMovesThatOneToItsOwnName)
+{
+    // Writes every 0.0999998 s to endTime 0.2: 0.1999996 is named "0.2" at 6 digits, then the
+    // end, 0.2, needs that name: the earlier directory moves to "0.1999996" (index too).
+    ScratchDir scratch("lastWrite");
+    const fs::path dir = twoDisks(scratch);
+    setEntry(dir / "system/controlDict", "endTime", "0.2");
+    setEntry(dir / "system/controlDict", "writeInterval", "0.0999998");
+    runCase(dir);
+    std::vector<std::string> names;
+    for (const auto& [t, name] : gpic::listTimeDirectories(dir.string())) {
+        names.push_back(name);
+        gpic::Particles p;
+        double time = -1;
+        gpic::readParticles((dir / name / "particles.vtp").string(), p, time);
+        EXPECT_NEAR(time, t, 1e-9) << name;
+    }
+    EXPECT_EQ(names, (std::vector<std::string>{"0", "0.0999998", "0.1999996", "0.2"}));
+    const gpic::PvdCollection pvd((dir / "twoDisks.pvd").string());
+    ASSERT_EQ(pvd.entries().size(), 4u);
+    for (std::size_t k = 0; k < 4; ++k) EXPECT_EQ(pvd.entries()[k].file, names[k] + "/particles.vtp");
+}

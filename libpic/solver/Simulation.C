@@ -10,6 +10,7 @@
 #include "io/TimeDirectories.H"
 #include "solver/CaseFiles.H"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -265,22 +266,53 @@ void Simulation::writeState(const Particles& particles, double time, long step, 
 
 std::string Simulation::timeDirectoryName(double t)
 {
+    // A time this run wrote already keeps its name (the same state written again).
+    const auto sameTime = [](double a, double b) { return std::abs(a - b) <= 1e-12 * std::max(1.0, std::abs(b)); };
+    for (const auto& w : written_)
+        if (sameTime(w.first, t)) return w.second;
     // A name fits when no other directory of this run has it and it reads back nearer t than
     // the previous write (or the start): 0.15 is not written as "0.2" before 0.2 comes.
     const double previous = written_.empty() ? std::stod(context_.startTimeName) : written_.back().first;
-    const auto fits = [&](const std::string& n) {
+    const auto free = [&](const std::string& n) {
         if (n == context_.startTimeName) return false;
         for (const auto& w : written_)
             if (w.second == n) return false;
-        return std::abs(std::stod(n) - t) <= 0.5 * std::abs(t - previous);
+        return true;
+    };
+    const auto fits = [&](const std::string& n) {
+        return free(n) && std::abs(std::stod(n) - t) <= 0.5 * std::abs(t - previous);
     };
     if (timeDigits_ == 0) timeDigits_ = timeControl_->timePrecision();
     std::string name = timeName(t, timeDigits_);
     if (fits(name)) return name;
     const std::string unfit = name;
+    if (!written_.empty() && written_.back().second == unfit &&
+        std::abs(std::stod(unfit) - t) <= 0.5 * std::abs(t - written_.back().first)) {
+        // t's name is the rounded name of the previous write just before it (a last write at
+        // endTime after a write at nearly the same time): that one takes the digits that tell
+        // it from t, so that each directory holds the state its name says.
+        auto& last = written_.back();
+        std::string moved;
+        for (int d = timeDigits_ + 1; d <= 17 && moved.empty(); ++d) {
+            const std::string n = timeName(last.first, d);
+            if (n != unfit && free(n) && std::abs(std::stod(n) - last.first) <= 0.5 * std::abs(t - last.first)) moved = n;
+        }
+        if (moved.empty()) throw RunError("time " + timeName(t, 17) + " s: no directory name of up to 17 digits is free");
+        fs::rename(fs::path(options_.caseDir) / last.second, fs::path(options_.caseDir) / moved);
+        PvdCollection pvd(pvdPath(options_.caseDir));
+        pvd.removeTime(last.first);
+        pvd.add(last.first, moved + "/particles.vtp", 0);
+        if (writeGrid_) pvd.add(last.first, moved + "/grid.vti", 1);
+        pvd.write();
+        if (onDisk_.name == last.second) onDisk_.name = moved;
+        log() << "Time directory " << last.second << " (time " << std::setprecision(12) << last.first
+              << " s) renamed " << moved << ": time " << t << " s is written as " << unfit << "\n";
+        last.second = moved;
+        return unfit;
+    }
     int digits = timeDigits_;
     while (!fits(name) && digits < 17) name = timeName(t, ++digits);
-    if (!fits(name)) throw RunError("time " + std::to_string(t) + " s: no directory name of up to 17 digits is free");
+    if (!fits(name)) throw RunError("time " + timeName(t, 17) + " s: no directory name of up to 17 digits is free");
     std::ostringstream os;
     os << "keyword 'timePrecision': " << timeDigits_ << " digits would name time " << std::setprecision(12) << t
        << " s '" << unfit << "' (another time's name, or nearer another time); time directories get " << digits
