@@ -19,6 +19,24 @@ fs::path twoDisks(const ScratchDir& scratch)
     return dir;
 }
 
+//- The case holds exactly these time directories, each with the state of the time its name
+//  says, and the index lists each once, in order.
+void expectTimeDirectories(const fs::path& dir, const std::vector<std::string>& expected)
+{
+    std::vector<std::string> names;
+    for (const auto& [t, name] : gpic::listTimeDirectories(dir.string())) {
+        names.push_back(name);
+        gpic::Particles p;
+        double time = -1;
+        gpic::readParticles((dir / name / "particles.vtp").string(), p, time);
+        EXPECT_NEAR(time, t, 1e-9) << name;
+    }
+    EXPECT_EQ(names, expected);
+    const gpic::PvdCollection pvd((dir / "twoDisks.pvd").string());
+    ASSERT_EQ(pvd.entries().size(), expected.size());
+    for (std::size_t k = 0; k < expected.size(); ++k) EXPECT_EQ(pvd.entries()[k].file, expected[k] + "/particles.vtp");
+}
+
 } // namespace
 
 TEST(Output, writeGridAddsTheGridAsASecondParaViewPart)
@@ -92,18 +110,7 @@ TEST(Output, aTimePrecisionTooShortForTheWritesGetsMoreDigitsAndNoDirectoryIsRep
     setEntry(dir / "system/controlDict", "writeInterval", "0.05");
     setEntry(dir / "system/controlDict", "timePrecision", "1");
     runCase(dir);
-    std::vector<std::string> names;
-    for (const auto& [t, name] : gpic::listTimeDirectories(dir.string())) {
-        names.push_back(name);
-        gpic::Particles p;
-        double time = -1;
-        gpic::readParticles((dir / name / "particles.vtp").string(), p, time);
-        EXPECT_NEAR(time, t, 1e-9) << name;  // the directory holds the state its name says
-    }
-    EXPECT_EQ(names, (std::vector<std::string>{"0", "0.05", "0.1", "0.15", "0.2"}));
-    const gpic::PvdCollection pvd((dir / "twoDisks.pvd").string());
-    ASSERT_EQ(pvd.entries().size(), 5u);
-    for (std::size_t k = 0; k < 5; ++k) EXPECT_EQ(pvd.entries()[k].file, names[k] + "/particles.vtp");
+    expectTimeDirectories(dir, {"0", "0.05", "0.1", "0.15", "0.2"});
 }
 
 TEST(Output, aLastWriteJustAfterAnIntervalWriteMovesThatOneToItsOwnName)
@@ -115,16 +122,5 @@ TEST(Output, aLastWriteJustAfterAnIntervalWriteMovesThatOneToItsOwnName)
     setEntry(dir / "system/controlDict", "endTime", "0.2");
     setEntry(dir / "system/controlDict", "writeInterval", "0.0999998");
     runCase(dir);
-    std::vector<std::string> names;
-    for (const auto& [t, name] : gpic::listTimeDirectories(dir.string())) {
-        names.push_back(name);
-        gpic::Particles p;
-        double time = -1;
-        gpic::readParticles((dir / name / "particles.vtp").string(), p, time);
-        EXPECT_NEAR(time, t, 1e-9) << name;
-    }
-    EXPECT_EQ(names, (std::vector<std::string>{"0", "0.0999998", "0.1999996", "0.2"}));
-    const gpic::PvdCollection pvd((dir / "twoDisks.pvd").string());
-    ASSERT_EQ(pvd.entries().size(), 4u);
-    for (std::size_t k = 0; k < 4; ++k) EXPECT_EQ(pvd.entries()[k].file, names[k] + "/particles.vtp");
+    expectTimeDirectories(dir, {"0", "0.0999998", "0.1999996", "0.2"});
 }
