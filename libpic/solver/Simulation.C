@@ -84,6 +84,7 @@ Simulation::Simulation(const RunOptions& options)
     for (const auto& lib : options_.libs) Plugins::open(lib);
 
     timeControl_ = std::make_unique<TimeControl>(controlDict_);
+    timeDigits_ = timeControl_->timePrecision();
     if (controlDict_.found("stages") && controlDict_.found("damping"))
         controlDict_.fail("damping", "a run in stages sets the damping per stage: move `damping` into the stages");
     const auto damping = controlDict_.getOrDefault<double>("damping", 0.0);
@@ -279,15 +280,15 @@ std::string Simulation::timeDirectoryName(double t)
             if (w.second == n) return false;
         return true;
     };
-    const auto fits = [&](const std::string& n) {
-        return free(n) && std::abs(std::stod(n) - t) <= 0.5 * std::abs(t - previous);
+    // Name n reads back as time `of`, nearer it than half the spacing to `other`.
+    const auto readsBack = [](const std::string& n, double of, double other) {
+        return std::abs(std::stod(n) - of) <= 0.5 * std::abs(of - other);
     };
-    if (timeDigits_ == 0) timeDigits_ = timeControl_->timePrecision();
+    const auto fits = [&](const std::string& n) { return free(n) && readsBack(n, t, previous); };
     std::string name = timeName(t, timeDigits_);
     if (fits(name)) return name;
     const std::string unfit = name;
-    if (!written_.empty() && written_.back().second == unfit &&
-        std::abs(std::stod(unfit) - t) <= 0.5 * std::abs(t - written_.back().first)) {
+    if (!written_.empty() && written_.back().second == unfit && readsBack(unfit, t, previous)) {
         // t's name is the rounded name of the previous write just before it (a last write at
         // endTime after a write at nearly the same time): that one takes the digits that tell
         // it from t, so that each directory holds the state its name says.
@@ -295,7 +296,7 @@ std::string Simulation::timeDirectoryName(double t)
         std::string moved;
         for (int d = timeDigits_ + 1; d <= 17 && moved.empty(); ++d) {
             const std::string n = timeName(last.first, d);
-            if (n != unfit && free(n) && std::abs(std::stod(n) - last.first) <= 0.5 * std::abs(t - last.first)) moved = n;
+            if (n != unfit && free(n) && readsBack(n, last.first, t)) moved = n;
         }
         if (moved.empty()) throw RunError("time " + timeName(t, 17) + " s: no directory name of up to 17 digits is free");
         fs::rename(fs::path(options_.caseDir) / last.second, fs::path(options_.caseDir) / moved);
