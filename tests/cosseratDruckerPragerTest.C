@@ -30,8 +30,8 @@ Particles point(const Material& m, double p0, bool polar)
 {
     Particles p;
     p.add(Vector2::Zero(), m.rho(), 1.0, Vector2(0.5, 0.5), 0, 0);  // packed: m = rho V
-    for (const auto& h : m.historyNames()) p.declareHistory(h);
-    if (polar) p.polar.enable(1);
+    m.declareFields(p);
+    if (polar) p.carry(FieldGroup::polar);
     p.sigma[0] = SymTensor(p0, p0, p0, 0.0);
     return p;
 }
@@ -40,7 +40,7 @@ void step(const Material& m, Particles& p, const SymTensor& de, double r = 0, co
 {
     p.dEps[0] = de;
     p.dOmega[0] = 0;
-    if (p.polar.enabled()) {
+    if (p.carries(FieldGroup::polar)) {
         p.polar.dRotation[0] = r;
         p.polar.dKappa[0] = dk;
     }

@@ -65,9 +65,11 @@ TEST(CosseratReduction, aNonpolarSceneHasNoRotationArrays)
 {
     const RunResult r = run(nonpolar);
     EXPECT_FALSE(r.hasRotation);
-    EXPECT_FALSE(r.particles.polar.enabled());
-    EXPECT_EQ(r.particles.polar.bytes(), 0u);
-    EXPECT_TRUE(r.particles.polar.w.empty());
+    EXPECT_FALSE(r.particles.carries(FieldGroup::polar));
+    const CosseratParticles& c = r.particles.polar;
+    EXPECT_EQ(c.w.capacity() + c.omega.capacity() + c.sigma21.capacity() + c.mu.capacity() + c.kappa.capacity() +
+                  c.dRotation.capacity() + c.dKappa.capacity(),
+              0u);
     const RunResult polar = run("type cosseratElastic; rho 2000; G 1e6; nu 0.3; Gc 0; l 0;");
     EXPECT_TRUE(polar.hasRotation);
     // The polar arrays are the only difference in memory: 3 doubles, 3 vectors and dRotation.

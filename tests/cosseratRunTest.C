@@ -36,8 +36,8 @@ void columnCase(const fs::path& dir, const std::string& scheme, double endTime)
 
 void expectSame(const Particles& a, const Particles& b)
 {
-    ASSERT_TRUE(a.polar.enabled());
-    ASSERT_TRUE(b.polar.enabled());
+    ASSERT_TRUE(a.carries(FieldGroup::polar));
+    ASSERT_TRUE(b.carries(FieldGroup::polar));
     expectBitwise(a.id, b.id, "id");
     expectBitwise(a.x, b.x, "x");
     expectBitwise(a.v, b.v, "v");
@@ -95,7 +95,7 @@ TEST(CosseratRun, aRestartContinuesBitwiseAsTheStraightRun)
     Particles read;
     const auto times = listTimeDirectories(split.string());
     readParticles((split / times.back().second / "particles.vtp").string(), read, t);
-    EXPECT_TRUE(read.polar.enabled());
+    EXPECT_TRUE(read.carries(FieldGroup::polar));
     EXPECT_FALSE(read.hasHistory("microRotation"));
     expectBitwise(read.polar.w, restarted.solver().particles().polar.w, "microRotation read back");
 }
@@ -117,9 +117,9 @@ TEST(CosseratRun, aPolarMaterialNoBodyUsesAddsNoRotationField)
     const auto used = initialisedSimulation(polar);
     const auto unused = initialisedSimulation(listedOnly);
     EXPECT_TRUE(used->solver().hasRotation());
-    EXPECT_TRUE(used->solver().particles().polar.enabled());
+    EXPECT_TRUE(used->solver().particles().carries(FieldGroup::polar));
     EXPECT_FALSE(unused->solver().hasRotation());
-    EXPECT_FALSE(unused->solver().particles().polar.enabled());
+    EXPECT_FALSE(unused->solver().particles().carries(FieldGroup::polar));
     // Without the rotation the step is the translational one (E = 2 G (1 + nu) as sand's G).
     EXPECT_GT(unused->solver().criticalTimeStep(), used->solver().criticalTimeStep());
 }

@@ -53,7 +53,7 @@ LayerResult shearLayer(int nCells)
                     "plate { type prescribedVelocity; velocity table ((0 0.02 0) (0.45 0.02 0) (0.55 0 0)); }\n");
     auto simulation = runAndKeep(dir);
     const Particles& p = simulation->solver().particles();
-    EXPECT_TRUE(p.polar.enabled());
+    EXPECT_TRUE(p.carries(FieldGroup::polar));
 
     double U = 0;
     int plate = 0;

@@ -34,8 +34,8 @@ double compressed(const std::string& entries, double looseness, double& state, b
     const auto m = Material::New(Dictionary::parse(entries, "constant/materials/sand"));
     Particles p;
     p.add(Vector2::Zero(), rho, looseness, Vector2::Constant(0.5), 0, 0);  // V = looseness m / rho
-    for (const auto& h : m->historyNames()) p.declareHistory(h);
-    if (polar) p.polar.enable(1);
+    m->declareFields(p);
+    if (polar) p.carry(FieldGroup::polar);
     p.sigma[0] = SymTensor(p0, p0, p0, 0);
     p.dEps[0] = SymTensor(0, -1e-4, 0, 0);
     p.dOmega[0] = 0;

@@ -25,7 +25,7 @@ struct Point {
         : m(Material::New(Dictionary::parse(entries, "constant/materials/soil")))
     {
         p.add(Vector2::Zero(), m->rho(), 1.0, Vector2::Constant(0.5), 0, 0);  // packed: m = rho V
-        for (const auto& h : m->historyNames()) p.declareHistory(h);
+        m->declareFields(p);
         p.sigma[0] = sigma0;
     }
     void step(double dOmega)

@@ -63,7 +63,7 @@ Run oedometer(double psiDeg)
     auto m = Material::New(d);
     Particles p;
     p.add(Vector2::Zero(), m->rho(), 1.0, Vector2::Constant(0.5), 0, 0);  // packed: m = rho V
-    for (const auto& h : m->historyNames()) p.declareHistory(h);
+    m->declareFields(p);
     const double V = -10, dt = 1e-6, L = 1;
     Run r;
     for (int k = 1; k <= 3000; ++k) {

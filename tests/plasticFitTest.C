@@ -100,7 +100,7 @@ double biaxialPeak(const std::string& entries, double p0, int steps)
     auto m = material(entries);
     Particles p;
     p.add(Vector2::Zero(), m->rho(), 1.0, Vector2::Constant(0.5), 0, 0);  // packed: m = rho V
-    for (const auto& h : m->historyNames()) p.declareHistory(h);
+    m->declareFields(p);
     p.sigma[0] = SymTensor(-p0, -p0, -p0, 0);
     const double de22 = -1e-5;
     const auto sigma11After = [&](double de11, Particles& out) {

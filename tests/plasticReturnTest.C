@@ -39,7 +39,7 @@ struct Point {
     explicit Point(const std::string& entries) : m(material(entries))
     {
         p.add(Vector2::Zero(), m->rho(), 1.0, Vector2::Constant(0.5), 0, 0);  // packed: m = rho V
-        for (const auto& h : m->historyNames()) p.declareHistory(h);
+        m->declareFields(p);
     }
     void step(const SymTensor& dEps, double dOmega = 0)
     {

@@ -47,7 +47,7 @@ double angularMomentum(const Particles& p, const Grid& grid, const ShapeFunction
     for (std::size_t q = 0; q < p.size(); ++q) {
         const Vector2 r = p.x[q] - centre;
         L += p.m[q] * (r.x() * p.v[q].y() - r.y() * p.v[q].x());
-        if (!p.hasAffine()) continue;
+        if (!p.carries(FieldGroup::affine)) continue;
         Eigen::Matrix2d D = Eigen::Matrix2d::Zero();
         for (int a = 0; a < w.stride; ++a) {
             const std::size_t k = q * w.stride + a;
@@ -237,7 +237,7 @@ TEST(Transfer, apicWithContactAndStagesIsTheSameAtOneAndTwoThreads)
     bladeCase(scratch.path() / "one");
     bladeCase(scratch.path() / "two");
     const Particles one = runAtThreads(scratch.path() / "one", 1), two = runAtThreads(scratch.path() / "two", 2);
-    ASSERT_TRUE(one.hasAffine());
+    ASSERT_TRUE(one.carries(FieldGroup::affine));
     ASSERT_GT(one.size(), 100u);
     expectBitwise(one.x, two.x, "x");
     expectBitwise(one.v, two.v, "v");

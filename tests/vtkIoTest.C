@@ -73,6 +73,7 @@ Particles sampleParticles(std::size_t n = 50)
               static_cast<int>(i % 3), static_cast<int>(i % 2));
     p.declareHistory("kappa");
     p.declareHistory("damage");
+    p.carry(FieldGroup::plasticStrain);
     for (std::size_t i = 0; i < n; ++i) {
         p.id[i] = static_cast<int>(1000 + i);
         p.x0[i] += Vector2(u(rng), u(rng)) * 1e-3;

@@ -8,7 +8,6 @@
 #include "solver/CaseFiles.H"
 #include "solver/CosseratField.H"
 
-
 namespace gpic {
 
 InitialiseSummary initialiseCase(const std::string& dir)
@@ -26,7 +25,10 @@ InitialiseSummary initialiseCase(const std::string& dir)
             break;
         }
     const Dictionary bodiesDict = readCaseFile(dir, "constant/bodies");
-    const auto filled = fillBodies(bodiesDict, grid, materials, readGravity(dir));
+    auto filled = fillBodies(bodiesDict, grid, materials, readGravity(dir));
+    // The arrays the materials declare, so that the first time directory holds what every
+    // later one does (ParaView colours by yieldState from the start).
+    for (const auto& m : materials) m->declareFields(filled.particles);
     gridDict.warnUnused();
     materialsDict.warnUnused();
     bodiesDict.warnUnused();

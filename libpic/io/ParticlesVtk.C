@@ -2,7 +2,7 @@
 
 #include "io/AtomicVtkWrite.H"
 #include "io/ParticlesVtkFormat.H"
-#include "particles/Particles.H"
+#include "particles/ParticleFields.H"
 
 #include <vtkCellArray.h>
 #include <vtkDoubleArray.h>
@@ -20,6 +20,8 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <type_traits>
+#include <variant>
 
 namespace gpic {
 
@@ -44,47 +46,54 @@ vtkSmartPointer<vtkIntArray> intArray(const char* name, const std::vector<int>& 
     return a;
 }
 
+// One table entry to VTK components, by element type.
+void put(double value, double* out, int) { out[0] = value; }
+void put(const Vector2& v, double* out, int nComponents)
+{
+    out[0] = v.x(); out[1] = v.y();
+    if (nComponents == 3) out[2] = 0.0;
+}
 //- Plane-strain (11, 22, 33, 12) as a full 3x3 tensor, row-major, as ParaView expects.
-void fullTensor(const SymTensor& s, double* out)
+void put(const SymTensor& s, double* out, int)
 {
     out[0] = s[XX]; out[1] = s[XY]; out[2] = 0.0;
     out[3] = s[XY]; out[4] = s[YY]; out[5] = 0.0;
     out[6] = 0.0;   out[7] = 0.0;   out[8] = s[ZZ];
 }
-
-vtkSmartPointer<vtkDoubleArray> tensorArray(const char* name, const std::vector<SymTensor>& t)
-{
-    auto a = doubleArray(name, 9, static_cast<vtkIdType>(t.size()));
-    double* out = a->GetPointer(0);
-    for (std::size_t i = 0; i < t.size(); ++i) fullTensor(t[i], out + 9 * i);
-    return a;
-}
-
 //- The affine velocity matrix C_p (a velocity gradient, not symmetric) as a 3x3 tensor.
-vtkSmartPointer<vtkDoubleArray> affineArray(const char* name, const decltype(Particles::affine)& C)
+void put(const Eigen::Matrix2d& C, double* out, int)
 {
-    auto a = doubleArray(name, 9, static_cast<vtkIdType>(C.size()));
-    double* out = a->GetPointer(0);
-    for (std::size_t i = 0; i < C.size(); ++i) {
-        double* o = out + 9 * i;
-        o[0] = C[i](0, 0); o[1] = C[i](0, 1); o[2] = 0.0;
-        o[3] = C[i](1, 0); o[4] = C[i](1, 1); o[5] = 0.0;
-        o[6] = 0.0;        o[7] = 0.0;        o[8] = 0.0;
-    }
-    return a;
+    out[0] = C(0, 0); out[1] = C(0, 1); out[2] = 0.0;
+    out[3] = C(1, 0); out[4] = C(1, 1); out[5] = 0.0;
+    out[6] = 0.0;     out[7] = 0.0;     out[8] = 0.0;
 }
 
-vtkSmartPointer<vtkDoubleArray> vectorArray(const char* name, const std::vector<Vector2>& v,
-                                            int nComponents)
+//- The point array of a state field (ints as Int32, everything else as Float64).
+vtkSmartPointer<vtkDataArray> stateArray(const ParticleField& f, const Particles& p)
 {
-    auto a = doubleArray(name, nComponents, static_cast<vtkIdType>(v.size()));
-    double* out = a->GetPointer(0);
-    for (std::size_t i = 0; i < v.size(); ++i) {
-        out[nComponents * i] = v[i].x();
-        out[nComponents * i + 1] = v[i].y();
-        if (nComponents == 3) out[3 * i + 2] = 0.0;
-    }
-    return a;
+    return std::visit(
+        [&](const auto* a) -> vtkSmartPointer<vtkDataArray> {
+            using T = typename std::decay_t<decltype(*a)>::value_type;
+            if constexpr (std::is_same_v<T, int>) {
+                return intArray(f.name, *a);
+            }
+            else {
+                auto out = doubleArray(f.name, f.components, static_cast<vtkIdType>(a->size()));
+                double* o = out->GetPointer(0);
+                for (std::size_t i = 0; i < a->size(); ++i) put((*a)[i], o + f.components * i, f.components);
+                return out;
+            }
+        },
+        fieldArray(f, p));
+}
+
+//- The point array of a derived output.
+vtkSmartPointer<vtkDataArray> derivedArray(const ParticleField& f, const Particles& p)
+{
+    auto out = doubleArray(f.name, f.components, static_cast<vtkIdType>(p.size()));
+    double* o = out->GetPointer(0);
+    for (std::size_t i = 0; i < p.size(); ++i) f.derive(p, i, o + f.components * i);
+    return out;
 }
 
 vtkSmartPointer<vtkDoubleArray> scalarArray(const char* name, const std::vector<double>& s)
@@ -140,49 +149,18 @@ void writeParticles(const std::string& path, const Particles& p, double time,
     poly->SetVerts(verts);
 
     vtkPointData* pd = poly->GetPointData();
-    pd->AddArray(intArray("id", p.id));
-    pd->AddArray(intArray("body", p.body));
-    pd->AddArray(intArray("material", p.material));
-    pd->AddArray(vectorArray("velocity", p.v, 3));
-    std::vector<Vector2> displacement(n);
-    for (std::size_t i = 0; i < n; ++i) displacement[i] = p.x[i] - p.x0[i];
-    pd->AddArray(vectorArray("displacement", displacement, 3));
-    pd->AddArray(vectorArray("initialPosition", p.x0, 3));
-    pd->AddArray(scalarArray("mass", p.m));
-    pd->AddArray(scalarArray("volume", p.V));
-    pd->AddArray(scalarArray("work", p.work));
-    pd->AddArray(vectorArray("halfSize", p.halfSize, 2));
-    auto stress = tensorArray("stress", p.sigma);
-    if (p.polar.enabled())  // a Cosserat stress is not symmetric: yx holds sigma21
-        for (std::size_t i = 0; i < n; ++i) stress->SetComponent(static_cast<vtkIdType>(i), 3, p.polar.sigma21[i]);
-    pd->AddArray(stress);
-    pd->AddArray(tensorArray("strain", p.eps));
-    pd->AddArray(tensorArray("plasticStrain", p.epsP));
-
-    auto pressure = doubleArray("pressure", 1, nv);
-    auto vonMises = doubleArray("vonMisesStress", 1, nv);
-    for (std::size_t i = 0; i < n; ++i) {
-        const SymTensor& s = p.sigma[i];
-        const double mean = (s[XX] + s[YY] + s[ZZ]) / 3.0;
-        const double d1 = s[XX] - mean, d2 = s[YY] - mean, d3 = s[ZZ] - mean;
-        const double J2 = 0.5 * (d1 * d1 + d2 * d2 + d3 * d3) + s[XY] * s[XY];
-        pressure->SetValue(static_cast<vtkIdType>(i), -mean);
-        vonMises->SetValue(static_cast<vtkIdType>(i), std::sqrt(3.0 * J2));
+    for (const ParticleField& f : particleFields()) {
+        if (!p.carries(f.group) || f.role == FieldRole::scratch || f.storedIn) continue;
+        pd->AddArray(f.role == FieldRole::derived ? derivedArray(f, p) : stateArray(f, p));
     }
-    pd->AddArray(pressure);
-    pd->AddArray(vonMises);
+    for (const ParticleField& f : particleFields()) {  // arrays stored inside another (not the points)
+        if (!p.carries(f.group) || !f.storedIn || !pd->GetArray(f.storedIn)) continue;
+        const auto& values = *std::get<std::vector<double>*>(fieldArray(f, p));
+        vtkDataArray* into = pd->GetArray(f.storedIn);
+        for (std::size_t i = 0; i < n; ++i) into->SetComponent(static_cast<vtkIdType>(i), f.storedComponent, values[i]);
+    }
     for (const auto& name : p.historyNames())
         pd->AddArray(scalarArray(name.c_str(), p.history(name)));
-    if (p.hasAffine()) {  // APIC's C_p and the kinetic energy it carries
-        pd->AddArray(affineArray("affineVelocity", p.affine));
-        pd->AddArray(scalarArray("affineKineticEnergy", p.affineEnergy));
-    }
-    if (p.polar.enabled()) {  // Cosserat state (CosseratParticles.H), only in polar scenes
-        pd->AddArray(scalarArray("microRotation", p.polar.w));
-        pd->AddArray(scalarArray("microRotationRate", p.polar.omega));
-        pd->AddArray(vectorArray("coupleStress", p.polar.mu, 3));
-        pd->AddArray(vectorArray("curvature", p.polar.kappa, 3));
-    }
 
     // "TimeValue" is the field ParaView shows as the dataset time.
     vtkFieldData* fd = poly->GetFieldData();

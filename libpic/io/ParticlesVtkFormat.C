@@ -1,29 +1,17 @@
 #include "io/ParticlesVtkFormat.H"
 
 #include "core/error.H"
-
-#include <array>
+#include "particles/ParticleFields.H"
 
 namespace gpic {
 namespace detail {
 
-namespace {
-
-// Arrays written by writeParticles; any other one-component Float64 array is a history variable.
-const std::array<const char*, 21> builtinArrays{
-    "id", "body", "material", "velocity", "displacement", "initialPosition", "mass", "volume",
-    "halfSize", "stress", "strain", "plasticStrain", "pressure", "vonMisesStress", "work",
-    // Cosserat scenes only
-    "microRotation", "microRotationRate", "coupleStress", "curvature",
-    // APIC only
-    "affineVelocity", "affineKineticEnergy"};
-
-} // namespace
-
 bool isBuiltinParticleArray(const std::string& name)
 {
-    for (const char* b : builtinArrays)
-        if (name == b) return true;
+    // Every array the table writes, in any scene; any other one-component Float64 array is
+    // a history variable.
+    for (const ParticleField& f : particleFields())
+        if (*f.name && name == f.name) return true;
     return false;
 }
 

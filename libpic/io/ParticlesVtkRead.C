@@ -3,7 +3,7 @@
 #include "io/ParticlesVtkCheck.H"
 #include "io/ParticlesVtkFormat.H"
 #include "io/VtkErrorGuard.H"
-#include "particles/Particles.H"
+#include "particles/ParticleFields.H"
 
 #include <vtkCommand.h>
 #include <vtkDataArray.h>
@@ -15,9 +15,12 @@
 #include <vtkStringArray.h>
 #include <vtkXMLPolyDataReader.h>
 
+#include <array>
 #include <exception>
 #include <filesystem>
 #include <system_error>
+#include <type_traits>
+#include <variant>
 
 namespace gpic {
 
@@ -41,34 +44,26 @@ vtkDataArray* required(vtkPointData* pd, const char* name, int nComponents, vtkI
     return a;
 }
 
-void readInts(vtkDataArray* a, std::vector<int>& out)
+// VTK components to one table entry, by element type.
+void get(vtkDataArray* a, vtkIdType t, int& out) { out = static_cast<int>(a->GetComponent(t, 0)); }
+void get(vtkDataArray* a, vtkIdType t, double& out) { out = a->GetComponent(t, 0); }
+void get(vtkDataArray* a, vtkIdType t, Vector2& out) { out = Vector2(a->GetComponent(t, 0), a->GetComponent(t, 1)); }
+//- The full 3x3 tensor's (11, 22, 33, 12).
+void get(vtkDataArray* a, vtkIdType t, SymTensor& out)
 {
-    for (std::size_t i = 0; i < out.size(); ++i)
-        out[i] = static_cast<int>(a->GetComponent(static_cast<vtkIdType>(i), 0));
+    out = SymTensor(a->GetComponent(t, 0), a->GetComponent(t, 4), a->GetComponent(t, 8), a->GetComponent(t, 1));
 }
-
-void readVectors(vtkDataArray* a, std::vector<Vector2>& out)
+void get(vtkDataArray* a, vtkIdType t, Eigen::Matrix2d& out)
 {
-    for (std::size_t i = 0; i < out.size(); ++i) {
-        const auto t = static_cast<vtkIdType>(i);
-        out[i] = Vector2(a->GetComponent(t, 0), a->GetComponent(t, 1));
-    }
+    out << a->GetComponent(t, 0), a->GetComponent(t, 1), a->GetComponent(t, 3), a->GetComponent(t, 4);
 }
 
 void readScalars(vtkDataArray* a, std::vector<double>& out)
 {
-    for (std::size_t i = 0; i < out.size(); ++i)
-        out[i] = a->GetComponent(static_cast<vtkIdType>(i), 0);
+    for (std::size_t i = 0; i < out.size(); ++i) get(a, static_cast<vtkIdType>(i), out[i]);
 }
 
-void readTensors(vtkDataArray* a, std::vector<SymTensor>& out)
-{
-    for (std::size_t i = 0; i < out.size(); ++i) {
-        const auto t = static_cast<vtkIdType>(i);
-        out[i] = SymTensor(a->GetComponent(t, 0), a->GetComponent(t, 4), a->GetComponent(t, 8),
-                           a->GetComponent(t, 1));
-    }
-}
+bool inPoints(const ParticleField& f) { return f.storedIn && std::string(f.storedIn) == "points"; }
 
 std::vector<std::string> readStrings(vtkFieldData* fd, const char* name)
 {
@@ -114,27 +109,19 @@ void readParticles(const std::string& path, Particles& p, double& time,
     vtkPointData* pd = poly->GetPointData();
     if (!pd) cannotReadParticles(path, "missing point data");
 
-    // Look every required array up before touching p, so a bad file leaves p unchanged.
-    vtkDataArray* idA = required(pd, "id", 1, nv, path);
-    vtkDataArray* bodyA = required(pd, "body", 1, nv, path);
-    vtkDataArray* materialA = required(pd, "material", 1, nv, path);
-    vtkDataArray* velocityA = required(pd, "velocity", 3, nv, path);
-    vtkDataArray* x0A = required(pd, "initialPosition", 3, nv, path);
-    vtkDataArray* massA = required(pd, "mass", 1, nv, path);
-    vtkDataArray* volumeA = required(pd, "volume", 1, nv, path);
-    vtkDataArray* workA = required(pd, "work", 1, nv, path);
-    vtkDataArray* halfSizeA = required(pd, "halfSize", 2, nv, path);
-    vtkDataArray* stressA = required(pd, "stress", 9, nv, path);
-    vtkDataArray* strainA = required(pd, "strain", 9, nv, path);
-    vtkDataArray* plasticA = required(pd, "plasticStrain", 9, nv, path);
-    // Cosserat state: all four arrays or none.
-    vtkDataArray* rotationA = pd->GetArray("microRotation") ? required(pd, "microRotation", 1, nv, path) : nullptr;
-    vtkDataArray* rotationRateA = rotationA ? required(pd, "microRotationRate", 1, nv, path) : nullptr;
-    vtkDataArray* coupleA = rotationA ? required(pd, "coupleStress", 3, nv, path) : nullptr;
-    vtkDataArray* curvatureA = rotationA ? required(pd, "curvature", 3, nv, path) : nullptr;
-
-    vtkDataArray* affineA = pd->GetArray("affineVelocity") ? required(pd, "affineVelocity", 9, nv, path) : nullptr;
-    vtkDataArray* affineEnergyA = affineA ? required(pd, "affineKineticEnergy", 1, nv, path) : nullptr;
+    // Look every required array up before touching p, so a bad file leaves p unchanged. An
+    // optional group is in the file when its first array is; then all of its arrays must be.
+    const std::vector<ParticleField>& fields = particleFields();
+    std::array<bool, 4> groupInFile{true, false, false, false};
+    for (const ParticleField& f : fields)
+        if (f.group != FieldGroup::core && f.role == FieldRole::state && *f.name && pd->GetArray(f.name))
+            groupInFile[static_cast<int>(f.group)] = true;
+    std::vector<vtkDataArray*> arrays(fields.size(), nullptr);
+    for (std::size_t k = 0; k < fields.size(); ++k) {
+        const ParticleField& f = fields[k];
+        if (f.role != FieldRole::state || !groupInFile[static_cast<int>(f.group)] || inPoints(f)) continue;
+        arrays[k] = f.storedIn ? pd->GetArray(f.storedIn) : required(pd, f.name, f.components, nv, path);
+    }
 
     vtkFieldData* fd = poly->GetFieldData();
     vtkDataArray* timeA = fd ? fd->GetArray("TimeValue") : nullptr;
@@ -142,40 +129,27 @@ void readParticles(const std::string& path, Particles& p, double& time,
         cannotReadParticles(path, "missing field 'TimeValue'");
 
     Particles result;
+    for (const ParticleField& f : fields)
+        if (f.group != FieldGroup::core && groupInFile[static_cast<int>(f.group)]) result.carry(f.group);
     result.resize(n);
     for (vtkIdType i = 0; i < nv; ++i) {
         double xyz[3];
         poly->GetPoint(i, xyz);
         result.x[static_cast<std::size_t>(i)] = Vector2(xyz[0], xyz[1]);
     }
-    readInts(idA, result.id);
-    readInts(bodyA, result.body);
-    readInts(materialA, result.material);
-    readVectors(velocityA, result.v);
-    readVectors(x0A, result.x0);
-    readScalars(massA, result.m);
-    readScalars(volumeA, result.V);
-    readScalars(workA, result.work);
-    readVectors(halfSizeA, result.halfSize);
-    readTensors(stressA, result.sigma);
-    readTensors(strainA, result.eps);
-    readTensors(plasticA, result.epsP);
-    if (affineA) {
-        result.enableAffine();
-        for (std::size_t i = 0; i < n; ++i) {
-            const auto t = static_cast<vtkIdType>(i);
-            result.affine[i] << affineA->GetComponent(t, 0), affineA->GetComponent(t, 1),
-                                affineA->GetComponent(t, 3), affineA->GetComponent(t, 4);
-        }
-        readScalars(affineEnergyA, result.affineEnergy);
-    }
-    if (rotationA) {
-        result.polar.enable(n);
-        readScalars(rotationA, result.polar.w);
-        readScalars(rotationRateA, result.polar.omega);
-        readVectors(coupleA, result.polar.mu);
-        readVectors(curvatureA, result.polar.kappa);
-        for (std::size_t i = 0; i < n; ++i) result.polar.sigma21[i] = stressA->GetComponent(static_cast<vtkIdType>(i), 3);
+    for (std::size_t k = 0; k < fields.size(); ++k) {
+        vtkDataArray* a = arrays[k];
+        if (!a) continue;
+        const int component = fields[k].storedIn ? fields[k].storedComponent : 0;
+        std::visit(
+            [&](auto* values) {
+                for (std::size_t i = 0; i < n; ++i) {
+                    if (component == 0) get(a, static_cast<vtkIdType>(i), (*values)[i]);
+                    else if constexpr (std::is_same_v<std::decay_t<decltype(*values)>, std::vector<double>>)
+                        (*values)[i] = a->GetComponent(static_cast<vtkIdType>(i), component);
+                }
+            },
+            fields[k].array(result));
     }
 
     for (int k = 0; k < pd->GetNumberOfArrays(); ++k) {

@@ -17,6 +17,12 @@ Material::Material(const Dictionary& dict)
       rho_(dict.getChecked<double>("rho", [](const double& v) { return v > 0; }, "rho > 0"))
 {}
 
+void Material::declareFields(Particles& p) const
+{
+    for (const auto& h : historyNames()) p.declareHistory(h);
+    for (FieldGroup g : particleFields()) p.carry(g);
+}
+
 std::unique_ptr<Material> Material::New(const Dictionary& dict)
 {
     return Registry<Material>::select(dict, dict);

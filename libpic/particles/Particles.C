@@ -1,40 +1,83 @@
 #include "particles/Particles.H"
 
+#include "particles/ParticleFields.H"
+
 #include <algorithm>
 #include <numeric>
 #include <stdexcept>
+#include <type_traits>
+#include <variant>
 
 namespace gpic {
 
+namespace {
+
+template <class T> T zero() { return T(0); }
+template <> Vector2 zero<Vector2>() { return Vector2::Zero(); }
+template <> SymTensor zero<SymTensor>() { return SymTensor::Zero(); }
+template <> Eigen::Matrix2d zero<Eigen::Matrix2d>() { return Eigen::Matrix2d::Zero(); }
+
+template <class V> void permute(V& a, const std::vector<std::size_t>& order)
+{
+    V sorted(order.size());
+    for (std::size_t i = 0; i < order.size(); ++i) sorted[i] = a[order[i]];
+    a.swap(sorted);
+}
+
+template <class V> std::size_t held(const V& a) { return a.capacity() * sizeof(typename V::value_type); }
+
+template <class V> void resizeZero(V& a, std::size_t n) { a.resize(n, zero<typename V::value_type>()); }
+
+//- Apply op to every array of a group that p carries (the derived outputs have none).
+template <class Op> void forCarried(const Particles& p, Op op)
+{
+    for (const ParticleField& f : particleFields())
+        if (f.array && p.carries(f.group)) std::visit(op, fieldArray(f, p));
+}
+
+} // namespace
+
 void Particles::resize(std::size_t n)
 {
-    id.resize(n); body.resize(n); material.resize(n);
-    x.resize(n, Vector2::Zero()); x0.resize(n, Vector2::Zero()); v.resize(n, Vector2::Zero());
-    m.resize(n, 0.0); V.resize(n, 0.0); halfSize.resize(n, Vector2::Zero());
-    sigma.resize(n, SymTensor::Zero()); eps.resize(n, SymTensor::Zero());
-    epsP.resize(n, SymTensor::Zero());
-    work.resize(n, 0.0);
-    dEps.resize(n, SymTensor::Zero()); dOmega.resize(n, 0.0);
+    forCarried(*this, [n](auto* a) { resizeZero(*a, n); });
     for (auto& h : history_) h.resize(n, 0.0);
-    if (affineOn_) {
-        affine.resize(n, Eigen::Matrix2d::Zero());
-        affineEnergy.resize(n, 0.0);
+}
+
+void Particles::carry(FieldGroup g)
+{
+    carried_[static_cast<int>(g)] = true;
+    const std::size_t n = size();
+    for (const ParticleField& f : particleFields())
+        if (f.array && f.group == g) std::visit([n](auto* a) { resizeZero(*a, n); }, f.array(*this));
+}
+
+void Particles::drop(FieldGroup g)
+{
+    if (g == FieldGroup::core) throw std::logic_error("the core particle arrays cannot be dropped");
+    carried_[static_cast<int>(g)] = false;
+    for (const ParticleField& f : particleFields())
+        if (f.array && f.group == g) std::visit([](auto* a) { std::decay_t<decltype(*a)>().swap(*a); }, f.array(*this));
+}
+
+void Particles::append(const Particles& other)
+{
+    const std::size_t n0 = size();
+    for (const auto& h : other.historyNames()) declareHistory(h);
+    for (const ParticleField& f : particleFields())
+        if (other.carries(f.group)) carry(f.group);
+    resize(n0 + other.size());
+    const auto at = static_cast<std::ptrdiff_t>(n0);
+    for (const ParticleField& f : particleFields()) {
+        if (!f.array || !other.carries(f.group)) continue;
+        std::visit(
+            [&](auto* to) {
+                const auto* from = std::get<std::decay_t<decltype(to)>>(fieldArray(f, other));
+                std::copy(from->begin(), from->end(), to->begin() + at);
+            },
+            f.array(*this));
     }
-    polar.resize(n);
-}
-
-void Particles::enableAffine()
-{
-    affineOn_ = true;
-    affine.resize(size(), Eigen::Matrix2d::Zero());
-    affineEnergy.resize(size(), 0.0);
-}
-
-void Particles::disableAffine()
-{
-    affineOn_ = false;
-    decltype(affine)().swap(affine);
-    std::vector<double>().swap(affineEnergy);
+    for (const auto& h : other.historyNames())
+        std::copy(other.history(h).begin(), other.history(h).end(), history(h).begin() + at);
 }
 
 std::size_t Particles::add(const Vector2& position, double mass, double volume,
@@ -78,15 +121,6 @@ const std::vector<double>& Particles::history(const std::string& name) const
     return history_[static_cast<std::size_t>(it - historyNames_.begin())];
 }
 
-namespace {
-template <class V> void permute(V& a, const std::vector<std::size_t>& order)
-{
-    V sorted(order.size());
-    for (std::size_t i = 0; i < order.size(); ++i) sorted[i] = a[order[i]];
-    a.swap(sorted);
-}
-} // namespace
-
 void Particles::sortByMaterial()
 {
     std::vector<std::size_t> order(size());
@@ -98,17 +132,8 @@ void Particles::sortByMaterial()
 
 void Particles::reorder(const std::vector<std::size_t>& order)
 {
-    permute(id, order); permute(body, order); permute(material, order);
-    permute(x, order); permute(x0, order); permute(v, order);
-    permute(m, order); permute(V, order); permute(halfSize, order);
-    permute(sigma, order); permute(eps, order); permute(epsP, order); permute(work, order);
-    permute(dEps, order); permute(dOmega, order);
+    forCarried(*this, [&](auto* a) { permute(*a, order); });
     for (auto& h : history_) permute(h, order);
-    if (affineOn_) {
-        permute(affine, order);
-        permute(affineEnergy, order);
-    }
-    polar.reorder(order);
 }
 
 std::vector<ParticleBlock> Particles::blocks() const
@@ -123,21 +148,12 @@ std::vector<ParticleBlock> Particles::blocks() const
     return runs;
 }
 
-namespace {
-template<class V>
-std::size_t held(const V& a)
-{
-    return a.capacity() * sizeof(typename V::value_type);
-}
-} // namespace
-
 std::size_t Particles::bytes() const
 {
-    std::size_t total = held(id) + held(body) + held(material) + held(x) + held(x0) + held(v) + held(m) +
-                        held(V) + held(halfSize) + held(sigma) + held(eps) + held(epsP) + held(work) +
-                        held(dEps) + held(dOmega);
+    std::size_t total = 0;
+    forCarried(*this, [&](const auto* a) { total += held(*a); });
     for (const auto& h : history_) total += held(h);
-    return total + held(affine) + held(affineEnergy) + polar.bytes();
+    return total;
 }
 
 } // namespace gpic

@@ -33,8 +33,8 @@ void MpmSolver::setTransfer(std::unique_ptr<ParticleTransfer> transfer)
 
 void MpmSolver::matchAffine()
 {
-    if (transfer_->affine()) particles_.enableAffine();  // C_p zero for particles that had none
-    else particles_.disableAffine();
+    if (transfer_->affine()) particles_.carry(FieldGroup::affine);  // C_p zero for particles that had none
+    else particles_.drop(FieldGroup::affine);
 }
 
 void MpmSolver::formAffine(std::size_t q, const std::vector<Vector2>& velocity, const Vector2& xp)
@@ -68,7 +68,6 @@ void MpmSolver::filterVelocity(double dt, int order)
     filterScratch_.resize(2 * static_cast<std::size_t>(nFields));
     const auto isRigidField = [&](int f) { return contact_ && !rigid_.empty() && rigid_[f]; };
     const auto massOf = [&](int f) -> const std::vector<double>& { return contact_ ? contact_->field(f).mass : grid_.mass; };
-    const auto nActive = static_cast<long>(grid_.active.size());
     for (int f = 0; f < nFields; ++f) {
         filtered_[f].resize(nodes);
         filterScratch_[2 * f].resize(nodes);
@@ -77,12 +76,10 @@ void MpmSolver::filterVelocity(double dt, int order)
         const std::vector<Vector2>& v = contact_ ? contact_->field(f).velocity : grid_.velocity;
         const std::vector<Vector2>& a = contact_ ? contact_->field(f).accel : grid_.accel;
         std::vector<Vector2>& w = filterScratch_[2 * f];
-#pragma omp parallel for schedule(static) if (nActive >= minParallelWork())
-        for (long k = 0; k < nActive; ++k) {
-            const int n = grid_.active[k];
+        grid_.forEachActiveNode([&](int n) {
             w[n] = v[n] - dt * a[n];  // v^t with its conditions: the velocity the update started from
             filtered_[f][n] = double(order) * w[n];
-        }
+        });
     }
     const Particles& p = particles_;
     const int stride = weights_.stride;
@@ -92,8 +89,7 @@ void MpmSolver::filterVelocity(double dt, int order)
         const double coefficient = (k % 2 == 0 ? -1.0 : 1.0) * binomial;
         for (int f = 0; f < nFields; ++f) {
             std::vector<Vector2>& next = filterScratch_[2 * f + 1];
-#pragma omp parallel for schedule(static) if (nActive >= minParallelWork())
-            for (long k2 = 0; k2 < nActive; ++k2) next[grid_.active[k2]].setZero();
+            grid_.forEachActiveNode([&](int n) { next[n].setZero(); });
         }
         // One projection grid -> particles -> grid per field: S^T M_p S w, then / m_i.
         strips_.forEach([&](std::size_t q) {
@@ -118,21 +114,17 @@ void MpmSolver::filterVelocity(double dt, int order)
             const std::vector<Vector2>& v = contact_ ? contact_->field(f).velocity : grid_.velocity;
             const std::vector<Vector2>& a = contact_ ? contact_->field(f).accel : grid_.accel;
             std::vector<Vector2>& next = filterScratch_[2 * f + 1];
-#pragma omp parallel for schedule(static) if (nActive >= minParallelWork())
-            for (long k2 = 0; k2 < nActive; ++k2) {
-                const int n = grid_.active[k2];
+            grid_.forEachActiveNode([&](int n) {
                 next[n] = mass[n] > 0.0 ? Vector2(next[n] / mass[n]) : Vector2::Zero();
-            }
+            });
             applyBoundaries(next);
             // A node a rigid tool drives keeps the velocity the update started from.
             if (drivesRigidNodes())
                 for (int n : grid_.active)
                     if (rigidNodeBody_[n] >= 0) next[n] = v[n] - dt * a[n];
-#pragma omp parallel for schedule(static) if (nActive >= minParallelWork())
-            for (long k2 = 0; k2 < nActive; ++k2) {
-                const int n = grid_.active[k2];
+            grid_.forEachActiveNode([&](int n) {
                 filtered_[f][n] += coefficient * next[n];
-            }
+            });
             filterScratch_[2 * f].swap(next);
         }
     }
@@ -146,31 +138,38 @@ MpmSolver::MpmSolver(Grid grid, Particles particles,
       shape_(std::move(shape)), boundaries_(std::move(boundaries)), strips_(grid_),
       transfer_(std::make_unique<FlipTransfer>(Dictionary::parse("transfer FLIP;", "the seed's FLIP")))
 {
-    // Constrained side nodes: an opening's nodes are left free.
-    for (int s = 0; s < 4; ++s) {
-        const BoundaryCondition& bc = *boundaries_[s];
-        for (int n : grid_.sideNodes(static_cast<GridSide>(s)))
-            if (bc.isOpen(bc.along(grid_.nodePosition(n)))) hasOutlet_ = true;
-            else sideNodes_[s].push_back(n);
-        hasOutlet_ = hasOutlet_ || bc.letsOut();
-    }
-    for (const auto& m : materials_)
-        for (const auto& h : m->historyNames()) particles_.declareHistory(h);
+    refreshOpenings();  // the constrained side nodes
     // The rotation field only where a particle of a polar material is in the scene: a polar
     // material that constant/materials lists but no body uses costs nothing.
     for (int m : particles_.material)
         if (m >= 0 && m < static_cast<int>(materials_.size()) && materials_[m]->needsRotation()) hasRotation_ = true;
+    setupRotation();  // polar scenes only
+    setUpParticles();
+}
+
+void MpmSolver::setUpParticles()
+{
+    // The arrays the materials declare; plastic strain only where a material writes it.
+    bool plastic = false;
+    for (const auto& m : materials_) {
+        m->declareFields(particles_);
+        for (FieldGroup g : m->particleFields()) plastic = plastic || g == FieldGroup::plasticStrain;
+    }
+    if (!plastic) particles_.drop(FieldGroup::plasticStrain);
+    // The order a time directory of these particles gets in a restart too: a restart then
+    // steps bitwise as the straight run.
     particles_.sortByMaterial();
     reindex();
-    markDeformingMaterials();
     for (const auto& b : blocks_)
         if (b.material < 0 || b.material >= static_cast<int>(materials_.size()))
             throw RunError("particle material id " + std::to_string(b.material) +
                            " has no material in constant/materials");
+    markDeformingMaterials();
+    // The small-mass cut-off follows the lightest particle present.
     double lightest = 0;
     for (double m : particles_.m) lightest = lightest == 0 ? m : std::min(lightest, m);
     minNodalMass_ = 1e-9 * lightest;
-    setupRotation();  // polar scenes only; a nonpolar one drops any rotation arrays read
+    setupRotationParticles();  // a nonpolar scene drops any rotation arrays read
 }
 
 void MpmSolver::applyBoundaries(std::vector<Vector2>& field) const
@@ -280,24 +279,19 @@ void MpmSolver::particlesToGrid()
         }
     });
     grid_.collectActive();
-    const auto nActive = static_cast<long>(grid_.active.size());
     if (contact_)  // the system (centre-of-mass) field is the sum of the bodies' (F.8.6)
-#pragma omp parallel for schedule(static) if (nActive >= minParallelWork())
-        for (long k = 0; k < nActive; ++k) {
-            const int n = grid_.active[k];
+        grid_.forEachActiveNode([&](int n) {
             for (int b = 0; b < contact_->nBodies(); ++b) {
                 const BodyField& f = contact_->field(b);
                 grid_.mass[n] += f.mass[n];
                 grid_.momentum[n] += f.momentum[n];
             }
-        }
+        });
     // No small-mass cut-off: p_i/m_i is a weighted mean of particle velocities, exact for
     // any m_i > 0; zeroing light nodes would put spurious strain into a rigid translation.
-#pragma omp parallel for schedule(static) if (nActive >= minParallelWork())
-    for (long k = 0; k < nActive; ++k) {
-        const int n = grid_.active[k];
+    grid_.forEachActiveNode([&](int n) {
         grid_.velocity[n] = grid_.mass[n] > 0.0 ? Vector2(grid_.momentum[n] / grid_.mass[n]) : Vector2::Zero();
-    }
+    });
     if (driven) constrainRigidNodes(time_);
     applyBoundaries(grid_.velocity);
     if (contact_) bodyVelocities(time_);
@@ -314,12 +308,9 @@ void MpmSolver::bodyVelocities(double t)
                 if (f.mass[n] > 0.0) f.velocity[n] = driver->velocity(t, grid_.nodePosition(n));
             continue;
         }
-        const auto nActive = static_cast<long>(grid_.active.size());
-#pragma omp parallel for schedule(static) if (nActive >= minParallelWork())
-        for (long k = 0; k < nActive; ++k) {
-            const int n = grid_.active[k];
+        grid_.forEachActiveNode([&](int n) {
             if (f.mass[n] > 0.0) f.velocity[n] = f.momentum[n] / f.mass[n];
-        }
+        });
         applyBoundaries(f.velocity);
     }
 }
@@ -451,10 +442,7 @@ void MpmSolver::updateGrid(double dt)
         return;
     }
     auto timer = timers_.time("gridUpdate");
-    const auto nActive = static_cast<long>(grid_.active.size());
-#pragma omp parallel for schedule(static) if (nActive >= minParallelWork())
-    for (long k = 0; k < nActive; ++k) {
-        const int n = grid_.active[k];
+    grid_.forEachActiveNode([&](int n) {
         Vector2 F = grid_.fInt[n] + grid_.fExt[n];
         if (damping_ > 0) {
             // eq. 3.3.5: F_damp = -alpha |F_ext + F_int| sign(v_n), per component.
@@ -468,7 +456,7 @@ void MpmSolver::updateGrid(double dt)
         // get a huge F/m: USL then feeds it into the strain (the small-mass instability).
         grid_.accel[n] = grid_.mass[n] > minNodalMass_ ? Vector2(F / grid_.mass[n])
                                                        : Vector2::Zero();  // eq. 2.4.2
-    }
+    });
     if (!rigid_.empty()) {  // rigid nodes: the acceleration that brings them to the body's velocity
         for (auto& load : rigidLoads_) load = RigidBodyLoad{};
         for (int n : grid_.active) {
@@ -490,11 +478,9 @@ void MpmSolver::updateGrid(double dt)
             grid_.velocity[n] = vMaterial;
         }
     }
-#pragma omp parallel for schedule(static) if (nActive >= minParallelWork())
-    for (long k = 0; k < nActive; ++k) {
-        const int n = grid_.active[k];
+    grid_.forEachActiveNode([&](int n) {
         grid_.velocity[n] += dt * grid_.accel[n];  // eq. 2.4.3
-    }
+    });
     for (int s = 0; s < 4; ++s) boundaries_[s]->constrainUpdate(grid_.velocity, grid_.accel, dt, sideNodes_[s]);
 }
 
@@ -511,7 +497,6 @@ void MpmSolver::updateBodyFields(double dt)
     };
     {
         auto timer = timers_.time("gridUpdate");
-        const auto nActive = static_cast<long>(grid_.active.size());
         for (int b = 0; b < nBodies; ++b) {
             BodyField& f = contact_->field(b);
             if (isRigid(b)) {  // a rigid body's field is its driver's velocity (seed A14)
@@ -523,10 +508,8 @@ void MpmSolver::updateBodyFields(double dt)
                 }
                 continue;
             }
-#pragma omp parallel for schedule(static) if (nActive >= minParallelWork())
-            for (long k = 0; k < nActive; ++k) {
-                const int n = grid_.active[k];
-                if (!(f.mass[n] > 0.0)) continue;
+            grid_.forEachActiveNode([&](int n) {
+                if (!(f.mass[n] > 0.0)) return;
                 Vector2 F = f.force[n];
                 // eq. 3.3.5 on the body's own field. Not at a node shared with another body:
                 // there the contact takes the unbalanced force, and a damping force would only
@@ -539,7 +522,7 @@ void MpmSolver::updateBodyFields(double dt)
                 }
                 f.accel[n] = f.mass[n] > minNodalMass_ ? Vector2(F / f.mass[n]) : Vector2::Zero();  // eq. 2.4.2
                 f.velocity[n] += dt * f.accel[n];                                                // eq. 2.4.3
-            }
+            });
         }
         constrainBodies();
     }
@@ -550,11 +533,8 @@ void MpmSolver::updateBodyFields(double dt)
     auto timer = timers_.time("gridUpdate");
     constrainBodies();
     // The centre-of-mass field, for the grid output and function objects.
-    const auto nActive = static_cast<long>(grid_.active.size());
-#pragma omp parallel for schedule(static) if (nActive >= minParallelWork())
-    for (long k = 0; k < nActive; ++k) {
-        const int n = grid_.active[k];
-        if (!(grid_.mass[n] > 0.0)) continue;
+    grid_.forEachActiveNode([&](int n) {
+        if (!(grid_.mass[n] > 0.0)) return;
         Vector2 momentum = Vector2::Zero(), rate = Vector2::Zero();
         for (int b = 0; b < nBodies; ++b) {
             const BodyField& f = contact_->field(b);
@@ -563,7 +543,7 @@ void MpmSolver::updateBodyFields(double dt)
         }
         grid_.velocity[n] = momentum / grid_.mass[n];
         grid_.accel[n] = rate / grid_.mass[n];
-    }
+    });
 }
 
 void MpmSolver::updateStress(double dt)
@@ -601,21 +581,18 @@ void MpmSolver::updateStress(double dt)
             p.work[q] += 0.5 * p.V[q] * contract(p.sigma[q], de);
         };
         if (!cellMean_) {
-#pragma omp parallel for schedule(static) if (nParticles >= minParallelWork())
-            for (long q = 0; q < nParticles; ++q) strainIncrement(q, velocityGradient(q));
+            parallelFor(nParticles, [&](long q) { strainIncrement(q, velocityGradient(q)); });
         }
         else {
             velocityGradient_.resize(p.size());
-#pragma omp parallel for schedule(static) if (nParticles >= minParallelWork())
-            for (long q = 0; q < nParticles; ++q) velocityGradient_[q] = velocityGradient(q);
+            parallelFor(nParticles, [&](long q) { velocityGradient_[q] = velocityGradient(q); });
             cellMean_->average(p, [&](std::size_t q) { return velocityGradient_[q].trace(); }, cellMeanValue_);
-#pragma omp parallel for schedule(static) if (nParticles >= minParallelWork())
-            for (long q = 0; q < nParticles; ++q) {
+            parallelFor(nParticles, [&](long q) {
                 // The cell's mean dilatation rate in place of the particle's own; shear and spin kept.
                 Eigen::Matrix2d& L = velocityGradient_[q];
                 L.diagonal().array() += 0.5 * (cellMeanValue_[q] - L.trace());
                 strainIncrement(q, L);
-            }
+            });
         }
     }
     if (hasRotation_) {
@@ -642,7 +619,7 @@ void MpmSolver::gridToParticles(double dt)
     const int stride = weights_.stride;
     const auto nParticles = static_cast<long>(p.size());
     const double flip = transfer_->flipShare(dt);
-    const bool affine = p.hasAffine();
+    const bool affine = p.carries(FieldGroup::affine);
     long firstBad = nParticles, returned = 0;
 #pragma omp parallel for schedule(static) reduction(min : firstBad) reduction(+ : returned) if (nParticles >= minParallelWork())
     for (long q = 0; q < nParticles; ++q) {
@@ -706,20 +683,17 @@ void MpmSolver::remapVelocity(double dt)
     auto timer = timers_.time("particlesToGrid");
     const Particles& p = particles_;
     const int stride = weights_.stride;
-    const auto nActive = static_cast<long>(grid_.active.size());
-#pragma omp parallel for schedule(static) if (nActive >= minParallelWork())
-    for (long k = 0; k < nActive; ++k) {
-        const int n = grid_.active[k];
+    grid_.forEachActiveNode([&](int n) {
         grid_.momentum[n].setZero();
         if (contact_)
             for (int b = 0; b < contact_->nBodies(); ++b) contact_->field(b).momentum[n].setZero();
-    }
+    });
     strips_.forEach([&](std::size_t q) {
         const std::size_t k0 = q * stride;
         BodyField* body = contact_ ? &contact_->field(p.body[q]) : nullptr;
         // APIC: C_p about the position the weights were taken at (x_p^t = x_p^{t+1} - dt v_p,
         // v_p being the nodal velocity the particle moved with).
-        const Vector2 xp = p.hasAffine() ? Vector2(p.x[q] - dt * p.v[q]) : p.x[q];
+        const Vector2 xp = p.carries(FieldGroup::affine) ? Vector2(p.x[q] - dt * p.v[q]) : p.x[q];
         for (int a = 0; a < stride; ++a) {
             const int n = weights_.node[k0 + a];
             if (n < 0) continue;
@@ -728,25 +702,22 @@ void MpmSolver::remapVelocity(double dt)
             if (body) body->momentum[n] += momentum;
         }
     });
-#pragma omp parallel for schedule(static) if (nActive >= minParallelWork())
-    for (long k = 0; k < nActive; ++k) {
-        const int n = grid_.active[k];
+    grid_.forEachActiveNode([&](int n) {
         grid_.velocity[n] = grid_.mass[n] > 0.0 ? Vector2(grid_.momentum[n] / grid_.mass[n]) : Vector2::Zero();
-    }
+    });
     if (drivesRigidNodes()) constrainRigidNodes(time_ + dt);
     applyBoundaries(grid_.velocity);
     if (contact_) bodyVelocities(time_ + dt);
-    if (p.hasAffine()) {
+    if (p.carries(FieldGroup::affine)) {
         // APIC: C_p again, from the remapped nodal velocity: a mass-weighted mean of the
         // particles' motion, where v^{t+1} of a node that a particle barely touches holds
         // dt F/m of a tiny mass (the small-mass instability, Sulsky et al. 1995).
         const auto nParticles = static_cast<long>(p.size());
-#pragma omp parallel for schedule(static) if (nParticles >= minParallelWork())
-        for (long q = 0; q < nParticles; ++q) {
-            if (driverOf(q)) continue;
+        parallelFor(nParticles, [&](long q) {
+            if (driverOf(q)) return;
             const std::vector<Vector2>& velocity = contact_ ? contact_->field(p.body[q]).velocity : grid_.velocity;
             formAffine(static_cast<std::size_t>(q), velocity, p.x[q] - dt * p.v[q]);
-        }
+        });
     }
     if (hasRotation_) remapRotation();
 }

@@ -53,9 +53,7 @@ std::vector<char> readRigidRotation(const Dictionary& rigidBodies, const std::ve
 
 void MpmSolver::setupRotation()
 {
-    Particles& p = particles_;
     if (!hasRotation_) {
-        p.polar.disable();
         rotation_ = CosseratField{};
         return;
     }
@@ -66,21 +64,31 @@ void MpmSolver::setupRotation()
         r.materialPolar[m] = materials_[m]->needsRotation();
         r.materialJ[m] = r.materialPolar[m] ? materials_[m]->rotationalInertia() : 0.0;
     }
-    if (!p.polar.enabled()) {
-        // A state without rotation arrays (a new case): no micro-rotation, no couple stress,
-        // sigma21 = sigma12 (seed A2: the initial stress is symmetric).
-        p.polar.enable(p.size());
+    for (int s = 0; s < 4; ++s)  // w3c is odd under a reflection: zero on a symmetry plane
+        r.sideFixed[s] = boundaries_[s]->isMirror();
+    r.allocate(grid_.nNodes());
+}
+
+void MpmSolver::setupRotationParticles()
+{
+    Particles& p = particles_;
+    if (!hasRotation_) {
+        p.drop(FieldGroup::polar);
+        return;
+    }
+    if (!p.carries(FieldGroup::polar)) {
+        // A state without rotation arrays (a new case, or particles new to the scene): no
+        // micro-rotation, no couple stress, sigma21 = sigma12 (seed A2: the initial stress
+        // is symmetric).
+        p.carry(FieldGroup::polar);
         for (std::size_t q = 0; q < p.size(); ++q) p.polar.sigma21[q] = p.sigma[q][XY];
     }
-    for (int s = 0; s < 4; ++s)  // w3c is odd under a reflection: zero on a symmetry plane
-        r.sideFixed[s] = dynamic_cast<const SymmetryBoundary*>(boundaries_[s].get()) != nullptr;
-    r.allocate(grid_.nNodes());
     double lightest = 0;
     for (std::size_t q = 0; q < p.size(); ++q) {
-        const double mJ = p.m[q] * r.materialJ[static_cast<std::size_t>(p.material[q])];
+        const double mJ = p.m[q] * rotation_.materialJ[static_cast<std::size_t>(p.material[q])];
         if (mJ > 0) lightest = lightest == 0 ? mJ : std::min(lightest, mJ);
     }
-    r.minInertia = 1e-9 * lightest;
+    rotation_.minInertia = 1e-9 * lightest;
 }
 
 void MpmSolver::constrainRotation(std::vector<double>& field) const
@@ -93,13 +101,10 @@ void MpmSolver::rotationToGrid()
 {
     CosseratField& r = rotation_;
     const Particles& p = particles_;
-    const auto nActive = static_cast<long>(grid_.active.size());
-#pragma omp parallel for schedule(static) if (nActive >= minParallelWork())
-    for (long k = 0; k < nActive; ++k) {
-        const int n = grid_.active[k];
+    grid_.forEachActiveNode([&](int n) {
         r.inertia[n] = r.momentum[n] = r.moment[n] = r.accel[n] = 0.0;
         r.fixed[n] = 0;
-    }
+    });
     const int stride = weights_.stride;
     strips_.forEach([&](std::size_t q) {
         if (!isPolar(q)) return;
@@ -113,11 +118,9 @@ void MpmSolver::rotationToGrid()
             r.momentum[n] += NmJ * p.polar.omega[q];  // spin momentum, as eq. 2.4.1
         }
     });
-#pragma omp parallel for schedule(static) if (nActive >= minParallelWork())
-    for (long k = 0; k < nActive; ++k) {
-        const int n = grid_.active[k];
+    grid_.forEachActiveNode([&](int n) {
         r.rate[n] = r.inertia[n] > 0.0 ? r.momentum[n] / r.inertia[n] : 0.0;
-    }
+    });
     // Conditions: sides with `rotation fixed`, and the nodes a rigid body drives.
     for (int s = 0; s < 4; ++s)
         if (r.sideFixed[s])
@@ -167,14 +170,11 @@ void MpmSolver::updateRotation(double dt)
 {
     auto timer = timers_.time("rotation");
     CosseratField& r = rotation_;
-    const auto nActive = static_cast<long>(grid_.active.size());
-#pragma omp parallel for schedule(static) if (nActive >= minParallelWork())
-    for (long k = 0; k < nActive; ++k) {
-        const int n = grid_.active[k];
+    grid_.forEachActiveNode([&](int n) {
         if (r.fixed[n]) {
             r.accel[n] = 0.0;
             r.rate[n] = 0.0;
-            continue;
+            return;
         }
         double M = r.moment[n];
         if (damping_ > 0) {  // A3: the moment is damped as a force, with the sign of w_i
@@ -183,7 +183,7 @@ void MpmSolver::updateRotation(double dt)
         }
         r.accel[n] = r.inertia[n] > r.minInertia ? M / r.inertia[n] : 0.0;
         r.rate[n] += dt * r.accel[n];
-    }
+    });
 }
 
 void MpmSolver::rotationStrain(double dt)
@@ -193,9 +193,8 @@ void MpmSolver::rotationStrain(double dt)
     const CosseratField& r = rotation_;
     const int stride = weights_.stride;
     const auto nParticles = static_cast<long>(p.size());
-#pragma omp parallel for schedule(static) if (nParticles >= minParallelWork())
-    for (long q = 0; q < nParticles; ++q) {
-        if (!isPolar(static_cast<std::size_t>(q))) continue;
+    parallelFor(nParticles, [&](long q) {
+        if (!isPolar(static_cast<std::size_t>(q))) return;
         double w = 0.0;
         Vector2 gradient = Vector2::Zero();
         const std::size_t k0 = q * stride;
@@ -210,24 +209,23 @@ void MpmSolver::rotationStrain(double dt)
         p.polar.dRotation[q] = p.dOmega[q] + dt * w;
         p.polar.dKappa[q] = dt * gradient;  // eq. 2.6.2: kappa3j = w3c,j
         p.polar.kappa[q] += p.polar.dKappa[q];
-    }
+    });
 }
 
 void MpmSolver::addRotationWork()
 {
     Particles& p = particles_;
     const auto nParticles = static_cast<long>(p.size());
-#pragma omp parallel for schedule(static) if (nParticles >= minParallelWork())
-    for (long q = 0; q < nParticles; ++q) {
+    parallelFor(nParticles, [&](long q) {
         if (!isPolar(static_cast<std::size_t>(q))) {
             p.polar.sigma21[q] = p.sigma[q][XY];  // a nonpolar stress is symmetric
-            continue;
+            return;
         }
         // sigma12 dl12 + sigma21 dl21 + mu . dkappa beyond the 2 sigma12 de12 of the nonpolar work
         const double skew = p.sigma[q][XY] - p.polar.sigma21[q];
         p.work[q] += 0.5 * p.V[q] *
                      (skew * (p.polar.dRotation[q] - p.dEps[q][XY]) + p.polar.mu[q].dot(p.polar.dKappa[q]));
-    }
+    });
 }
 
 void MpmSolver::rotationToParticles(double dt)
@@ -237,9 +235,8 @@ void MpmSolver::rotationToParticles(double dt)
     const int stride = weights_.stride;
     const auto nParticles = static_cast<long>(p.size());
     const double flip = transfer_->rotationFlipShare(dt);  // FLIP under every transfer but FLIP's own blend
-#pragma omp parallel for schedule(static) if (nParticles >= minParallelWork())
-    for (long q = 0; q < nParticles; ++q) {
-        if (!isPolar(static_cast<std::size_t>(q))) continue;
+    parallelFor(nParticles, [&](long q) {
+        if (!isPolar(static_cast<std::size_t>(q))) return;
         double w = 0.0, a = 0.0;
         const std::size_t k0 = q * stride;
         for (int k = 0; k < stride; ++k) {
@@ -250,16 +247,14 @@ void MpmSolver::rotationToParticles(double dt)
         }
         p.polar.w[q] += dt * w;  // as eq. 2.4.7
         p.polar.omega[q] = flip * (p.polar.omega[q] + dt * a) + (1.0 - flip) * w;  // as eq. 2.4.8
-    }
+    });
 }
 
 void MpmSolver::remapRotation()
 {
     CosseratField& r = rotation_;
     const Particles& p = particles_;
-    const auto nActive = static_cast<long>(grid_.active.size());
-#pragma omp parallel for schedule(static) if (nActive >= minParallelWork())
-    for (long k = 0; k < nActive; ++k) r.momentum[grid_.active[k]] = 0.0;
+    grid_.forEachActiveNode([&](int n) { r.momentum[n] = 0.0; });
     const int stride = weights_.stride;
     strips_.forEach([&](std::size_t q) {
         if (!isPolar(q)) return;
@@ -270,11 +265,9 @@ void MpmSolver::remapRotation()
             if (n >= 0) r.momentum[n] += weights_.N[k0 + a] * mJ * p.polar.omega[q];
         }
     });
-#pragma omp parallel for schedule(static) if (nActive >= minParallelWork())
-    for (long k = 0; k < nActive; ++k) {
-        const int n = grid_.active[k];
+    grid_.forEachActiveNode([&](int n) {
         r.rate[n] = r.inertia[n] > 0.0 && !r.fixed[n] ? r.momentum[n] / r.inertia[n] : 0.0;
-    }
+    });
 }
 
 double MpmSolver::rotationalTimeStep() const

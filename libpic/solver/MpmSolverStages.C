@@ -15,38 +15,12 @@ void MpmSolver::replaceParticles(Particles particles)
                        "add or remove particles in a case with loads");
     particles_ = std::move(particles);
     matchAffine();
-    for (const auto& m : materials_)
-        for (const auto& h : m->historyNames()) particles_.declareHistory(h);
-    // The same order as the constructor makes of a time directory holding these particles:
-    // a restart then steps bitwise as the straight run.
-    particles_.sortByMaterial();
-    reindex();
-    for (const auto& b : blocks_)
-        if (b.material < 0 || b.material >= static_cast<int>(materials_.size()))
-            throw RunError("particle material id " + std::to_string(b.material) +
-                           " has no material in constant/materials");
-    markDeformingMaterials();
-    // As the constructor: the small-mass cut-off follows the lightest particle present.
-    double lightest = 0;
-    for (double m : particles_.m) lightest = lightest == 0 ? m : std::min(lightest, m);
-    minNodalMass_ = 1e-9 * lightest;
-    if (hasRotation_) {  // as setupRotation: particles new to the scene, and the inertia cut-off
-        if (!particles_.polar.enabled()) {
-            particles_.polar.enable(particles_.size());
-            for (std::size_t q = 0; q < particles_.size(); ++q) particles_.polar.sigma21[q] = particles_.sigma[q][XY];
-        }
-        double lightestJ = 0;
-        for (std::size_t q = 0; q < particles_.size(); ++q) {
-            const double mJ = particles_.m[q] * rotation_.materialJ[static_cast<std::size_t>(particles_.material[q])];
-            if (mJ > 0) lightestJ = lightestJ == 0 ? mJ : std::min(lightestJ, mJ);
-        }
-        rotation_.minInertia = 1e-9 * lightestJ;
-    }
+    setUpParticles();  // as the constructor: a restart of this state steps bitwise alike
 }
 
 void MpmSolver::refreshOpenings()
 {
-    // As the constructor: an open stretch's nodes are left free, a closed one is a wall.
+    // An open stretch's nodes are left free, a closed one is a wall.
     hasOutlet_ = false;
     for (int s = 0; s < 4; ++s) {
         const BoundaryCondition& bc = *boundaries_[s];

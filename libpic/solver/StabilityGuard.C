@@ -71,7 +71,7 @@ StabilityGuard::Survey StabilityGuard::survey() const
     const int bodies = static_cast<int>(rigid_.size());
     std::size_t invalid = n, outside = n;
     double kinetic = 0, work = 0, gravity = 0, speed2 = 0;
-    const bool affine = p.hasAffine();
+    const bool affine = p.carries(FieldGroup::affine);
     const long long count = static_cast<long long>(n);
     // Threads only where they pay: a parallel region costs microseconds.
 #pragma omp parallel for if (count > parallelFrom) schedule(static) reduction(min : invalid, outside) \

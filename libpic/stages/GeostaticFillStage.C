@@ -93,7 +93,7 @@ bool GeostaticFillStage::addLayer(MpmSolver& solver, ParticlePool& pool, double 
                 p.sigma[q] = SymTensor(K0_ * sV + sUU * u.x() * u.x(), K0_ * sV + sUU * u.y() * u.y(), K0_ * sV,
                                        sUU * u.x() * u.y());
                 p.v[q].setZero();
-                if (p.polar.enabled()) {  // no couple stress, sigma21 = sigma12 (eq. 3.3.4)
+                if (p.carries(FieldGroup::polar)) {  // no couple stress, sigma21 = sigma12 (eq. 3.3.4)
                     p.polar.sigma21[q] = p.sigma[q][XY];
                     p.polar.mu[q].setZero();
                     p.polar.omega[q] = 0.0;

@@ -14,31 +14,6 @@ Particles selectParticles(const Particles& from, const std::vector<std::size_t>&
     return out;
 }
 
-void appendParticles(Particles& to, const Particles& from)
-{
-    const std::size_t n0 = to.size(), n = from.size();
-    for (const auto& h : from.historyNames()) to.declareHistory(h);
-    if (from.hasAffine()) to.enableAffine();
-    to.resize(n0 + n);
-    const auto copy = [&](auto& a, const auto& b) { std::copy(b.begin(), b.end(), a.begin() + n0); };
-    copy(to.id, from.id); copy(to.body, from.body); copy(to.material, from.material);
-    copy(to.x, from.x); copy(to.x0, from.x0); copy(to.v, from.v);
-    copy(to.m, from.m); copy(to.V, from.V); copy(to.halfSize, from.halfSize);
-    copy(to.sigma, from.sigma); copy(to.eps, from.eps); copy(to.epsP, from.epsP); copy(to.work, from.work);
-    copy(to.dEps, from.dEps); copy(to.dOmega, from.dOmega);
-    for (const auto& h : from.historyNames()) copy(to.history(h), from.history(h));
-    if (from.hasAffine()) {  // else zero: C_p starts at rest
-        copy(to.affine, from.affine);
-        copy(to.affineEnergy, from.affineEnergy);
-    }
-    if (from.polar.enabled()) {  // the Cosserat state of a polar scene
-        to.polar.enable(n0 + n);
-        copy(to.polar.w, from.polar.w); copy(to.polar.omega, from.polar.omega);
-        copy(to.polar.sigma21, from.polar.sigma21); copy(to.polar.mu, from.polar.mu);
-        copy(to.polar.kappa, from.polar.kappa);
-    }
-}
-
 bool ParticlePool::exchange(MpmSolver& solver, const Predicate& sleep, const Predicate& wake, const OnWake& onWake)
 {
     const Particles& active = solver.particles();
@@ -49,11 +24,11 @@ bool ParticlePool::exchange(MpmSolver& solver, const Predicate& sleep, const Pre
 
     Particles next = selectParticles(active, keep);
     const std::size_t begin = next.size();
-    appendParticles(next, selectParticles(dormant_, woken));
+    next.append(selectParticles(dormant_, woken));
     if (onWake) onWake(next, begin, next.size());
 
     Particles pool = selectParticles(dormant_, stay);
-    appendParticles(pool, selectParticles(active, asleep));
+    pool.append(selectParticles(active, asleep));
     std::vector<std::size_t> byId(pool.size());
     std::iota(byId.begin(), byId.end(), std::size_t(0));
     std::stable_sort(byId.begin(), byId.end(), [&](std::size_t a, std::size_t b) { return pool.id[a] < pool.id[b]; });

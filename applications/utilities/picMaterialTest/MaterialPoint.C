@@ -7,11 +7,11 @@ namespace gpic {
 MaterialPoint::MaterialPoint(const Material& material, const SymTensor& sigma0)
     : material_(&material)
 {
-    for (const auto& h : material.historyNames()) particles_.declareHistory(h);
+    material.declareFields(particles_);
     particles_.add(Vector2::Zero(), material.rho(), 1.0, Vector2::Constant(0.5), 0, 0);
     particles_.sigma[0] = sigma0;
     if (material.needsRotation()) {  // polar: the micro-rotation follows the continuum (no
-        particles_.polar.enable(1);  // relative rotation, no curvature), sigma21 = sigma12
+        particles_.carry(FieldGroup::polar);  // relative rotation, no curvature), sigma21 = sigma12
         particles_.polar.sigma21[0] = sigma0[XY];
     }
 }
