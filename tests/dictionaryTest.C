@@ -219,6 +219,27 @@ TEST(Dictionary, RepeatedKeywordOverridesTheEarlierOne)
     EXPECT_EQ(d.subDict("s").get<int>("y"), 3);
 }
 
+TEST(Dictionary, AValueGivenTwiceInOneBlockIsSaidButAnOverrideOfAMacroIsNot)
+{
+    ::testing::internal::CaptureStderr();
+    const Dictionary d = Dictionary::parse("a 1;\nb 2;\ns { x 1; }\na 3;\ns { x 2; }\n", "f");
+    std::string err = ::testing::internal::GetCapturedStderr();
+    EXPECT_EQ(d.get<int>("a"), 3);
+    EXPECT_EQ(err, "Warning: f:4: keyword 'a' is given twice in dictionary f (first at line 1): the later value is used\n");
+    // Inside a sub-dictionary too; a repeated sub-dictionary merges silently (its values are
+    // checked within each block).
+    ::testing::internal::CaptureStderr();
+    Dictionary::parse("s { x 1;\n x 2; }\n", "f");
+    err = ::testing::internal::GetCapturedStderr();
+    EXPECT_NE(err.find("f:2: keyword 'x' is given twice in dictionary f/s (first at line 1)"), std::string::npos) << err;
+    // Overriding what a macro brought in is what macros are for.
+    ::testing::internal::CaptureStderr();
+    const Dictionary m = Dictionary::parse("base { E 1; nu 0.3; }\nsand { $base; E 2; }\n", "f");
+    err = ::testing::internal::GetCapturedStderr();
+    EXPECT_EQ(m.subDict("sand").get<int>("E"), 2);
+    EXPECT_EQ(err, "");
+}
+
 TEST(Dictionary, StrayPunctuationBetweenEntries)
 {
     const Dictionary d = Dictionary::parse("s { a 1; };\n;\nb 2;\n", "f");

@@ -3,9 +3,9 @@
 // weighted body, which must fall freely as x0 + g t^2/2 and come to rest where the material
 // carries its weight.
 #include "bodies/Expression.H"
-#include "bodies/PrescribedVelocityDriver.H"
 #include "bodies/TimeFunction.H"
-#include "bodies/WeightedDriver.H"
+#include "rigidBodyDrivers/PrescribedVelocityDriver.H"
+#include "rigidBodyDrivers/WeightedDriver.H"
 #include "support/CaseRunner.H"
 
 #include <algorithm>

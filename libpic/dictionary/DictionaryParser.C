@@ -90,6 +90,10 @@ void DictionaryParser::setEntry(Dictionary& dict, const std::string& keyword,
 
 void DictionaryParser::parseEntries(Dictionary& dict, Stream& in, const Token* open)
 {
+    // Values written in this block, by keyword and line: a second one is legal (the later
+    // wins, as in OpenFOAM) but more often a mistake than an intent, so it is said. A later
+    // value over one from an #include or a $macro is the usual way to override and is not.
+    std::vector<std::pair<std::string, int>> written;
     while (!in.atEnd()) {
         const Token& t = in.next();
         if (t.kind == Token::Kind::punctuation) {
@@ -107,8 +111,18 @@ void DictionaryParser::parseEntries(Dictionary& dict, Stream& in, const Token* o
             parseInclude(dict, t, in);
         else if (t.text[0] == '$')
             mergeMacro(dict, t, in);
-        else
+        else {
+            const bool isValue = in.atEnd() || !isPunct(in.peek().token, '{');
+            if (isValue) {
+                for (const auto& [keyword, line] : written)
+                    if (keyword == t.text)
+                        warning(t.file, t.line,
+                                "keyword '" + t.text + "' is given twice in dictionary " + dict.name_ +
+                                    " (first at line " + std::to_string(line) + "): the later value is used");
+                written.emplace_back(t.text, t.line);
+            }
             parseEntry(dict, t, in, Mode::merge);
+        }
     }
     if (open)
         throw InputError(open->file, open->line,

@@ -1,4 +1,4 @@
-#include "bodies/WeightedDriver.H"
+#include "rigidBodyDrivers/WeightedDriver.H"
 
 #include "core/error.H"
 #include "dictionary/Dictionary.H"

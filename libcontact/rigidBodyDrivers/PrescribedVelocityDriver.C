@@ -1,4 +1,4 @@
-#include "bodies/PrescribedVelocityDriver.H"
+#include "rigidBodyDrivers/PrescribedVelocityDriver.H"
 
 #include "core/Info.H"
 #include "dictionary/Dictionary.H"

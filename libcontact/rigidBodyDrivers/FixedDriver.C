@@ -1,4 +1,4 @@
-#include "bodies/FixedDriver.H"
+#include "rigidBodyDrivers/FixedDriver.H"
 
 namespace gpic {
 
