@@ -380,6 +380,19 @@ TEST_F(BadInput, aMistypedKeywordIsAWarningWithItsLineAndTheRunGoesOn)
     EXPECT_TRUE(fs::exists(dir / "0.1/particles.vtp"));
 }
 
+TEST_F(BadInput, picInitOverTheResultsOfARunIsRefusedUnlessAskedToOverwrite)
+{
+    startGood();
+    // A new start beside 0.1 and 0.2 would be continued from them by picSolver.
+    expectRejected("picInit", badInput, {"0.1, 0.2", "earlier run", "picInit -overwrite"});
+    const AppResult r = runApplication("picInit", dir, "-overwrite");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_TRUE(fs::exists(dir / "0/particles.vtp"));
+    EXPECT_FALSE(fs::exists(dir / "0.1"));
+    EXPECT_FALSE(fs::exists(dir / "0.2"));
+    expectNoTemporaries(dir);
+}
+
 // --- Run failures (exit 2): the run stops, what was written before stays ---------------------
 
 TEST_F(BadInput, aParticleLeavingTheGridStopsTheRunAndKeepsEarlierTimes)

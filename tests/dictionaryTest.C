@@ -240,6 +240,23 @@ TEST(Dictionary, AValueGivenTwiceInOneBlockIsSaidButAnOverrideOfAMacroIsNot)
     EXPECT_EQ(err, "");
 }
 
+TEST(Dictionary, AMissingKeywordNamesAnUnusedNearMissAsTheLikelyTypo)
+{
+    const Dictionary d = Dictionary::parse("deltaT 1e-4;\nendTme 2;\nmethod { kind a; }\n", "system/controlDict");
+    d.get<double>("deltaT");
+    EXPECT_EQ(errorOf([&] { d.get<double>("endTime"); }),
+              "system/controlDict:2: keyword 'endTime' is undefined in dictionary system/controlDict; 'endTme' here "
+              "is not used: a misspelling of it?");
+    EXPECT_EQ(errorOf([&] { d.getWord("Method", {"a", "b"}); }),
+              "system/controlDict:3: keyword 'Method' is undefined in dictionary system/controlDict; 'method' here "
+              "is not used: a misspelling of it?; valid choices: a, b");
+    // A keyword already read, or one too far off, is no guess.
+    EXPECT_EQ(errorOf([&] { d.get<double>("deltaX"); }),
+              "system/controlDict: keyword 'deltaX' is undefined in dictionary system/controlDict");
+    EXPECT_EQ(errorOf([&] { d.subDict("writeFormat"); }),
+              "system/controlDict: keyword 'writeFormat' is undefined in dictionary system/controlDict");
+}
+
 TEST(Dictionary, StrayPunctuationBetweenEntries)
 {
     const Dictionary d = Dictionary::parse("s { a 1; };\n;\nb 2;\n", "f");

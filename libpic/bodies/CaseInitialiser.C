@@ -1,6 +1,7 @@
 #include "bodies/CaseInitialiser.H"
 
 #include "bodies/BodyFiller.H"
+#include "core/error.H"
 #include "core/Plugins.H"
 #include "io/ParticlesVtk.H"
 #include "io/PvdCollection.H"
@@ -10,10 +11,12 @@
 
 namespace gpic {
 
-InitialiseSummary initialiseCase(const std::string& dir)
+InitialiseSummary initialiseCase(const std::string& dir, bool overwrite)
 {
     const Dictionary control = readCaseFile(dir, "system/controlDict");
     Plugins::open(control, "libs");
+    const double t0 = control.getOrDefault<double>("startTime", 0.0);
+    const std::string start = timeName(t0);
     const Dictionary gridDict = readCaseFile(dir, "constant/grid");
     const Grid grid(gridDict);
     readBoundaries(gridDict);  // only checked here: a bad side type fails now, not in picSolver
@@ -33,8 +36,19 @@ InitialiseSummary initialiseCase(const std::string& dir)
     materialsDict.warnUnused();
     bodiesDict.warnUnused();
 
-    const double t0 = control.getOrDefault<double>("startTime", 0.0);
-    const std::string start = timeName(t0);
+    // After every input is read and checked (its errors come first), before anything is
+    // written: a refusal leaves the case as it was.
+    std::vector<std::string> stale;
+    for (const auto& [t, name] : listTimeDirectories(dir))
+        if (name != start) stale.push_back(name);
+    if (!stale.empty() && !overwrite) {
+        std::string names;
+        for (const auto& name : stale) names += (names.empty() ? "" : ", ") + name;
+        throw InputError(dir, 0, "the case already holds the time directories " + names +
+                                     " of an earlier run: a new start beside them would be continued from "
+                                     "them; remove them (./Allclean) or run picInit -overwrite");
+    }
+    for (const auto& name : stale) removeTimeDirectory(dir, name);
     writeTimeDirectoryAtomically(dir, start, [&](const std::string& tmp) {
         writeParticles(tmp + "/particles.vtp", filled.particles, t0, materialNames(materials),
                        filled.bodyNames);

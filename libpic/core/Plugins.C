@@ -17,21 +17,55 @@ std::vector<std::string>& openedList()
     static std::vector<std::string> list;
     return list;
 }
+//- The conflicts met while a library is being opened (Plugins::open), as messages.
+std::vector<std::string>& pendingConflicts()
+{
+    static std::vector<std::string> list;
+    return list;
+}
+
+bool& opening()
+{
+    static bool flag = false;
+    return flag;
+}
 } // namespace
 
 const std::vector<std::string>& Plugins::opened() { return openedList(); }
+
+std::string Plugins::libraryOf(const void* address)
+{
+    Dl_info where{};
+    if (dladdr(address, &where) && where.dli_fname && *where.dli_fname) return where.dli_fname;
+    return "the application";
+}
+
+void Plugins::registrationConflict(const std::string& kind, const std::string& name,
+                                   const std::string& firstLibrary, const std::string& secondLibrary)
+{
+    const std::string message = kind + " type '" + name + "' of " + secondLibrary + " is already registered by " +
+                                firstLibrary + ": give it another name";
+    if (opening()) pendingConflicts().push_back(message);
+    else std::cerr << "Warning: " << message << '\n';
+}
 
 void Plugins::open(const std::string& library, const std::string& file, int line)
 {
     auto& list = openedList();
     if (std::find(list.begin(), list.end(), library) != list.end()) return;
-    if (!dlopen(library.c_str(), RTLD_NOW | RTLD_GLOBAL)) {
+    pendingConflicts().clear();
+    opening() = true;
+    void* handle = dlopen(library.c_str(), RTLD_NOW | RTLD_GLOBAL);
+    opening() = false;
+    if (!handle) {
         const char* why = dlerror();
         throw InputError(file, line,
                          "cannot load library '" + library + "': " + (why ? why : "unknown") +
                              " (is it on LD_LIBRARY_PATH? source etc/bashrc)");
     }
-    list.push_back(library);
+    list.push_back(library);  // loaded either way: its code stays, so it is not opened twice
+    if (!pendingConflicts().empty())
+        throw InputError(file, line, "library '" + library + "': " + pendingConflicts().front());
     info() << "Loaded library " << library << '\n';
 }
 

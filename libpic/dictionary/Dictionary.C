@@ -132,9 +132,7 @@ void Dictionary::fail(const std::string& keyword, const std::string& message) co
 template <class T> T Dictionary::get(const std::string& keyword) const
 {
     const Entry* e = findEntry(keyword);
-    if (!e)
-        throw InputError(file_, startLine_,
-                         "keyword '" + keyword + "' is undefined in dictionary " + name_);
+    if (!e) DictionaryParser::failMissing(*this, keyword);
     T value{};
     const std::string problem =
         e->dict ? std::string("expected ") + expectedForm(&value) + ", found a sub-dictionary"
@@ -187,10 +185,7 @@ std::string Dictionary::getWord(const std::string& keyword,
                                 const std::vector<std::string>& choices) const
 {
     const Entry* e = findEntry(keyword);
-    if (!e)
-        throw InputError(file_, startLine_,
-                         "keyword '" + keyword + "' is undefined in dictionary " + name_ +
-                             "; valid choices: " + joined(choices));
+    if (!e) DictionaryParser::failMissing(*this, keyword, "; valid choices: " + joined(choices));
     const std::string word = get<std::string>(keyword);
     if (std::find(choices.begin(), choices.end(), word) == choices.end())
         throw InputError(e->file, e->line,
@@ -209,9 +204,7 @@ std::string Dictionary::getWordOrDefault(const std::string& keyword,
 const Dictionary& Dictionary::subDict(const std::string& keyword) const
 {
     const Entry* e = findEntry(keyword);
-    if (!e)
-        throw InputError(file_, startLine_,
-                         "keyword '" + keyword + "' is undefined in dictionary " + name_);
+    if (!e) DictionaryParser::failMissing(*this, keyword);
     if (!e->dict)
         throw InputError(e->file, e->line,
                          "keyword '" + keyword + "' in dictionary " + name_ +

@@ -2,6 +2,10 @@
 // deep copies, parent links and names, used flags.
 #include "dictionary/DictionaryParser.H"
 
+#include "core/error.H"
+
+#include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -49,6 +53,55 @@ const Entry* DictionaryParser::entryIn(const Dictionary& dict, const std::string
     for (const Entry& e : dict.entries_)
         if (e.keyword == keyword) return &e;
     return nullptr;
+}
+
+namespace {
+//- Optimal string alignment distance: insertions, deletions, substitutions and swaps of two
+//  neighbouring letters, the edits a typing slip makes.
+std::size_t editDistance(const std::string& a, const std::string& b)
+{
+    std::vector<std::vector<std::size_t>> d(a.size() + 1, std::vector<std::size_t>(b.size() + 1));
+    for (std::size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
+    for (std::size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i)
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + (a[i - 1] != b[j - 1])});
+            if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+        }
+    return d[a.size()][b.size()];
+}
+
+std::string lowered(std::string s)
+{
+    for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return s;
+}
+} // namespace
+
+const Entry* DictionaryParser::likelyTypo(const Dictionary& dict, const std::string& keyword)
+{
+    // Short keywords are too close to each other for a guess to mean anything.
+    const std::size_t allowed = keyword.size() < 4 ? 0 : keyword.size() < 8 ? 1 : 2;
+    const Entry* best = nullptr;
+    std::size_t bestDistance = allowed + 1;
+    for (const Entry& e : dict.entries_) {
+        if (e.used || e.keyword == "FoamFile") continue;  // the header describes the file
+        const std::size_t distance = lowered(e.keyword) == lowered(keyword) ? 0 : editDistance(e.keyword, keyword);
+        if (distance < bestDistance) {
+            best = &e;
+            bestDistance = distance;
+        }
+    }
+    return best;
+}
+
+void DictionaryParser::failMissing(const Dictionary& dict, const std::string& keyword, const std::string& more)
+{
+    const std::string missing = "keyword '" + keyword + "' is undefined in dictionary " + dict.name_;
+    if (const Entry* typo = likelyTypo(dict, keyword))
+        throw InputError(typo->file, typo->line,
+                         missing + "; '" + typo->keyword + "' here is not used: a misspelling of it?" + more);
+    throw InputError(dict.file_, dict.startLine_, missing + more);
 }
 
 void DictionaryParser::setUsed(const Entry& entry, bool used)
