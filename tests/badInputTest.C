@@ -207,6 +207,15 @@ TEST_F(BadInput, anUnknownBodyShapeListsTheValidShapes)
                    {"constant/bodies:7:", "'square'", "upperLeft/shape", "circle, polygon, rectangle"});
 }
 
+TEST_F(BadInput, aSelfIntersectingPolygonNamesTheEdgesThatCross)
+{
+    startGood();
+    // A bow-tie: edges 1 ((0.1 0.6)-(0.3 1)) and 3 ((0.3 0.6)-(0.1 1)) cross at (0.2 0.8).
+    replaceText(bodies(), "type circle; centre (0.2 0.8); radius 0.2;",
+                "type polygon; points ((0.1 0.6) (0.3 1) (0.3 0.6) (0.1 1));");
+    expectRejected("picInit", badInput, {"constant/bodies:7:", "'points'", "upperLeft/shape", "edges 1 and 3 cross"});
+}
+
 TEST_F(BadInput, anUnknownStartFromWordListsTheValidWords)
 {
     startGood();

@@ -3,6 +3,7 @@
 
 #include "dictionary/Dictionary.H"
 
+#include <string>
 #include <vector>
 
 namespace gpic {
@@ -45,6 +46,7 @@ public:
     explicit PolygonShape(const Dictionary& d) : points_(d.get<std::vector<Vector2>>("points"))
     {
         if (points_.size() < 3) d.fail("points", "a polygon needs at least 3 points");
+        checkSimple(d);
     }
     //- Even-odd ray crossing test.
     bool inside(const Vector2& x) const override
@@ -70,6 +72,30 @@ public:
 
 private:
     std::vector<Vector2> points_;
+
+    //- A self-intersecting outline (a bow-tie) has no inside the user meant: the even-odd
+    //  test fills only part of it. Two edges that are not neighbours may touch (a thin wall
+    //  closing on itself) but not cross.
+    void checkSimple(const Dictionary& d) const
+    {
+        const std::size_t n = points_.size();
+        const auto [lo, hi] = bounds();
+        const double zero = 1e-12 * (hi - lo).squaredNorm();  // orientation round-off
+        const auto side = [&](const Vector2& a, const Vector2& b, const Vector2& c) {
+            const double o = (b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x());
+            return o > zero ? 1 : o < -zero ? -1 : 0;
+        };
+        for (std::size_t i = 0; i < n; ++i)
+            for (std::size_t j = i + 2; j < n; ++j) {
+                if (i == 0 && j == n - 1) continue;  // neighbours through the closing edge
+                const Vector2 &a = points_[i], &b = points_[(i + 1) % n], &c = points_[j], &e = points_[(j + 1) % n];
+                if (side(a, b, c) * side(a, b, e) < 0 && side(c, e, a) * side(c, e, b) < 0)
+                    d.fail("points", "keyword 'points' in dictionary " + d.name() + ": the polygon's edges " +
+                                         std::to_string(i + 1) + " and " + std::to_string(j + 1) +
+                                         " cross (a self-intersecting outline has no inside): list the corners "
+                                         "in order around the shape");
+            }
+    }
 };
 
 GPIC_REGISTER(Shape, RectangleShape, "rectangle")
