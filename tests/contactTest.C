@@ -5,7 +5,7 @@
 // without a contact pass (one body, or noSlip) runs exactly as without contactProperties.
 #include "boundaryConditions/FrictionalWall.H"
 #include "contact/ContactLaw.H"
-#include "contact/RigidSurface.H"
+#include "normals/RigidSurface.H"
 #include "support/CaseRunner.H"
 
 #include <cmath>

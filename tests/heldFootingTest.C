@@ -11,7 +11,7 @@
 //     sigma12 = 2 q (x1 - s) z^2 / (pi r^4),  r^2 = (x1 - s)^2 + z^2,  q = Q dtheta / pi.
 // Near the surface these differ from the uniform pressure of Poulos & Davis (sigma1 at
 // z = 0.5 m: 68 against 96 kPa); below z = 3 m the two agree within 1.3 % of P.
-#include "contact/RigidSurface.H"
+#include "normals/RigidSurface.H"
 #include "dictionary/Dictionary.H"
 #include "support/CaseRunner.H"
 

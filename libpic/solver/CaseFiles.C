@@ -64,27 +64,6 @@ std::vector<std::unique_ptr<ParticleLoad>> readLoads(const Dictionary& dict)
     return loads;
 }
 
-ContactSettings readContactProperties(const std::string& caseDir, const Dictionary& dict,
-                                      const std::vector<std::string>& bodyNames,
-                                      const std::function<bool(int)>& isRigid)
-{
-    ContactSettings settings;
-    settings.law = ContactLaw::New(dict, bodyNames);
-    if (dict.getWordOrDefault("normals", {"massGradient", "rigidSurface"}, "massGradient") == "massGradient")
-        return settings;
-    settings.normals = ContactNormals::rigidSurface;
-    const Dictionary bodies = readCaseFile(caseDir, "constant/bodies");
-    settings.surfaces.resize(bodyNames.size());
-    for (std::size_t b = 0; b < bodyNames.size(); ++b) {
-        if (!isRigid(static_cast<int>(b))) continue;
-        if (!bodies.isDict(bodyNames[b]))
-            dict.fail("normals", "rigidSurface needs the shape of rigid body '" + bodyNames[b] +
-                                     "', which constant/bodies does not define");
-        settings.surfaces[b] = std::make_unique<RigidSurface>(bodies.subDict(bodyNames[b]).subDict("shape"));
-    }
-    return settings;
-}
-
 Vector2 readGravity(const std::string& caseDir)
 {
     if (!std::filesystem::exists(std::filesystem::path(caseDir) / "constant/g"))

@@ -315,12 +315,11 @@ void MpmSolver::bodyVelocities(double t)
     }
 }
 
-void MpmSolver::setContact(std::unique_ptr<ContactLaw> law, ContactNormals normals,
-                           std::vector<std::unique_ptr<RigidSurface>> surfaces, int nBodies)
+void MpmSolver::setContact(std::unique_ptr<ContactPass> pass)
 {
-    // One field serves one body, and noSlip: then no per-body array and no contact pass exist.
-    if (!law || !law->needsBodyFields() || nBodies < 2) return;
-    contact_ = std::make_unique<MultiFieldContact>(std::move(law), normals, std::move(surfaces), nBodies, grid_);
+    // Without a pass (one body, noSlip) no per-body array exists.
+    if (!pass) return;
+    contact_ = std::move(pass);
     allocateExchange();
 }
 

@@ -174,10 +174,9 @@ Simulation::Simulation(const RunOptions& options)
     if (hasLoads_) solver_->setLoads(readLoads(readCaseFile(dir, "constant/loads")), bodyNames);
     if (fs::exists(fs::path(dir) / "constant/contactProperties")) {
         const Dictionary contactDict = readCaseFile(dir, "constant/contactProperties");
-        ContactSettings contact = readContactProperties(
-            dir, contactDict, bodyNames, [&](int b) { return solver_->rigidBody(b) != nullptr; });
-        solver_->setContact(std::move(contact.law), contact.normals, std::move(contact.surfaces),
-                            static_cast<int>(bodyNames.size()));
+        ContactScene scene{dir, bodyNames, {}};
+        for (int b = 0; b < scene.nBodies(); ++b) scene.rigid.push_back(solver_->rigidBody(b) != nullptr);
+        solver_->setContact(ContactPass::New(contactDict, scene, solver_->grid()));
         contactDict.warnUnused();
     }
 
@@ -225,9 +224,9 @@ Simulation::Simulation(const RunOptions& options)
           << solver_->grid().nx() << " x " << solver_->grid().ny() << " cells, scheme " << schemeName
           << ", shape functions " << shapeName << ", starting at t = " << time_ << " (" << startName
           << ")\n";
-    if (const MultiFieldContact* contact = solver_->contact())
-        log() << "Contact pass: " << contact->nBodies() << " bodies with their own velocity fields, normals "
-              << (contact->normals() == ContactNormals::rigidSurface ? "rigidSurface" : "massGradient") << "\n";
+    if (const ContactPass* contact = solver_->contact())
+        log() << "Contact pass: " << contact->nBodies() << " bodies with their own velocity fields, "
+              << contact->summary() << "\n";
 }
 
 Simulation::~Simulation() = default;

@@ -1,4 +1,4 @@
-#include "contact/RigidSurface.H"
+#include "normals/RigidSurface.H"
 
 #include "dictionary/Dictionary.H"
 
