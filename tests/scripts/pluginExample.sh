@@ -52,9 +52,18 @@ export LD_LIBRARY_PATH="$plugin:${LD_LIBRARY_PATH:-}"
 # 3. picToC lists the new type once the library is loaded.
 step "picToC -libs libmyMaterial.so"
 toc="$("$tmp/prefix/bin/picToC" -libs libmyMaterial.so)" || fail "picToC -libs libmyMaterial.so failed"
-echo "$toc" | grep -E -q '^material: .*\bviscoElastic\b' ||
-    fail "picToC -libs libmyMaterial.so does not list viscoElastic:
+echo "$toc" | grep -E -q '^material: .*\bviscoElastic \[libmyMaterial\.so\]' ||
+    fail "picToC -libs libmyMaterial.so does not list viscoElastic marked [libmyMaterial.so]:
 $toc"
+# Only the library's own types are marked, and every kind is listed.
+[ "$(echo "$toc" | grep -o '\[[^]]*\]' | sort -u)" = "[libmyMaterial.so]" ] ||
+    fail "picToC marks types other than the library's:
+$toc"
+for kind in material boundaryCondition contactLaw contactNormals contactAlgorithm shapeFunction \
+            updateScheme transfer functionObject shape rigidBodyDriver load stage; do
+    echo "$toc" | grep -q "^$kind: " || fail "picToC does not list the kind $kind:
+$toc"
+done
 
 # 4. Run the case.
 step "running tutorials/plugins/viscoElasticBar"
