@@ -9,6 +9,8 @@
 #include "support/Applications.H"
 #include "support/CaseRunner.H"
 
+#include <unistd.h>
+
 #include <algorithm>
 
 using namespace gpic::test;
@@ -310,6 +312,24 @@ TEST_F(BadInput, aBodyReachingOutsideTheGridIsRefused)
     replaceText(bodies(), "centre (0.8 0.2)", "centre (0.9 0.2)");
     expectRejected("picInit", badInput,
                    {"constant/bodies:15:", "shape", "'lowerRight'", "outside the grid", "(1.1 0.4)"});
+}
+
+TEST_F(BadInput, aGridTooLargeToNumberIsRefusedNamingNCells)
+{
+    // 200 000 x 200 000 cells have 4e10 nodes: beyond an int's numbering, whatever the memory.
+    startGood();
+    setEntry(grid(), "nCells", "(200000 200000)");
+    expectBothReject({"constant/grid:5:", "nCells", "200000 x 200000 cells", "40000400001 nodes"});
+}
+
+TEST_F(BadInput, aGridBeyondTheMachinesMemoryIsRefusedBeforeAllocating)
+{
+    // 46 000 x 46 000 cells: 2.1e9 nodes (an int can number them) need about 197 GB.
+    const double have = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
+    if (have > 190e9) GTEST_SKIP() << "this machine could hold the grid";
+    startGood();
+    setEntry(grid(), "nCells", "(46000 46000)");
+    expectBothReject({"constant/grid:5:", "nCells", "46000 x 46000 cells", "need at least 197 GB", "this machine has"});
 }
 
 TEST_F(BadInput, aFixedTimeStepAboveTheStabilityLimitGivesTheLimit)

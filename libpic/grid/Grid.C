@@ -3,8 +3,13 @@
 #include "core/Threads.H"
 #include "dictionary/Dictionary.H"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
+#include <limits>
+#include <sstream>
 
 namespace gpic {
 
@@ -13,6 +18,34 @@ const std::array<std::string, 4>& gridSideNames()
     static const std::array<std::string, 4> names{"left", "right", "bottom", "top"};
     return names;
 }
+
+namespace {
+//- Refuse a grid of nx x ny cells whose nodes the machine cannot hold (or number).
+void checkMemory(const Dictionary& dict, long nx, long ny)
+{
+    // What the nodes need before anything is allocated: a grid beyond the machine (or
+    // beyond an int's node numbering) is an input error, not a bad_alloc in mid-setup.
+    const double nodes = double(nx + 1) * double(ny + 1);
+    // The grid's own nodal arrays (Grid::allocate): mass, five vectors, the active flag and index.
+    constexpr double nodeBytes = sizeof(double) + 5 * sizeof(Vector2) + sizeof(unsigned char) + sizeof(int);
+    const double need = nodes * nodeBytes;
+    const double have = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
+    const auto size = [](double bytes) {
+        std::ostringstream s;
+        s << std::setprecision(3) << (bytes >= 1e9 ? bytes / 1e9 : bytes / 1e6) << (bytes >= 1e9 ? " GB" : " MB");
+        return s.str();
+    };
+    const std::string cells = "nCells: " + std::to_string(nx) + " x " + std::to_string(ny) + " cells";
+    if (nodes > double(std::numeric_limits<int>::max()))
+        dict.fail("nCells", cells + " have " + std::to_string(static_cast<long long>(nodes)) +
+                                " nodes, more than the " + std::to_string(std::numeric_limits<int>::max()) +
+                                " a grid can number");
+    if (have > 0 && need > have)
+        dict.fail("nCells", cells + " need at least " + size(need) + " of memory for the nodes alone; this machine has " +
+                                size(have));
+}
+
+} // namespace
 
 Grid::Grid(const Dictionary& dict)
 {
@@ -30,6 +63,7 @@ Grid::Grid(const Dictionary& dict)
     const auto n = dict.getChecked<std::vector<int>>(
         "nCells", [](const std::vector<int>& v) { return v.size() == 2 && v[0] > 0 && v[1] > 0; },
         "two positive cell counts (nx ny)");
+    checkMemory(dict, n[0], n[1]);
     nx_ = n[0];
     ny_ = n[1];
     allocate();
