@@ -2,6 +2,7 @@
 
 #include "core/Plugins.H"
 #include "core/Info.H"
+#include "core/StopSignals.H"
 #include "core/Threads.H"
 #include "core/error.H"
 #include "io/GridVtk.H"
@@ -385,6 +386,7 @@ long Simulation::run()
     else guard_->start(time_, step_);
     bool writtenLast = true;
     const double noStage = std::numeric_limits<double>::infinity();
+    const StopSignals stopSignals;  // SIGINT, SIGTERM: finish the step, write it, stop
     while (!timeControl_->finished(time_) && !(stages_ && stages_->done())) {
         try {
             solver_->setTime(time_);
@@ -425,6 +427,12 @@ long Simulation::run()
         if (stage == StageEvent::ended) {
             stages_->beginNext(*solver_, time_, step_);
             restartGuard();
+        }
+        if (const int signal = StopSignals::received()) {
+            if (!writtenLast) write();
+            throw StopRequest(signal, StopSignals::name(signal) + " at t = " + exact(time_) + " s (step " +
+                                          std::to_string(step_) + "): the state is written to " +
+                                          (fs::path(options_.caseDir) / onDisk_.name).string());
         }
         const auto now = clock::now();
         if (std::chrono::duration<double>(now - lastProgress).count() >= progressInterval_) {

@@ -1,0 +1,107 @@
+// A run stopped by SIGTERM (a batch system's kill) or SIGINT (Ctrl-C) ends cleanly: it
+// finishes the step, writes that state as a time directory (listed in the ParaView index),
+// leaves no temporary directory, prints one line and exits with 128 + the signal's number;
+// a restart goes on from the written state.
+#include "io/TimeDirectories.H"
+#include "support/Applications.H"
+#include "support/CaseRunner.H"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <thread>
+
+using namespace gpic::test;
+
+namespace {
+
+//- picSolver started in the background on caseDir, its output in files beside the case.
+pid_t startSolver(const fs::path& caseDir)
+{
+    const std::string bin = (fs::path(GPIC_BINARY_DIR) / "bin" / "picSolver").string();
+    const std::string out = (caseDir.parent_path() / "picSolver.stdout").string();
+    const std::string err = (caseDir.parent_path() / "picSolver.stderr").string();
+    const pid_t pid = fork();
+    if (pid == 0) {
+        const int o = open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        const int e = open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        dup2(o, 1);
+        dup2(e, 2);
+        execl(bin.c_str(), bin.c_str(), "-case", caseDir.c_str(), static_cast<char*>(nullptr));
+        _exit(127);
+    }
+    return pid;
+}
+
+//- Wait for `pid` at most `seconds`; its wait status, or -1 on time-out (then it is killed).
+int waitFor(pid_t pid, double seconds)
+{
+    const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+    int status = 0;
+    while (std::chrono::steady_clock::now() < end) {
+        if (waitpid(pid, &status, WNOHANG) == pid) return status;
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    kill(pid, SIGKILL);
+    waitpid(pid, &status, 0);
+    return -1;
+}
+
+void stopsCleanlyOn(int signal, const std::string& name)
+{
+    ScratchDir scratch{"stopSignal"};
+    const fs::path dir = scratch.path() / "twoDisks";
+    copyCase(tutorialPath("verification/twoDisks"), dir);
+    // 1e-5 s steps to 3 s (before the disks leave the grid): far longer than the test waits,
+    // so only the signal ends this run.
+    setEntry(dir / "system/controlDict", "deltaT", "1e-5");
+    setEntry(dir / "system/controlDict", "endTime", "3");
+    ASSERT_EQ(runApplication("picInit", dir).exitCode, 0);
+
+    const pid_t pid = startSolver(dir);
+    ASSERT_GT(pid, 0);
+    // Into the run: a first time directory after 0 is written.
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+    while (!fs::exists(dir / "0.1/uniform/time") && std::chrono::steady_clock::now() < deadline)
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    ASSERT_TRUE(fs::exists(dir / "0.1/uniform/time")) << "the run never wrote 0.1";
+    ASSERT_EQ(kill(pid, signal), 0);
+    const int status = waitFor(pid, 120);
+    ASSERT_NE(status, -1) << "picSolver did not stop within 120 s of " << name;
+    ASSERT_TRUE(WIFEXITED(status)) << "picSolver died of the signal instead of stopping";
+    EXPECT_EQ(WEXITSTATUS(status), 128 + signal);
+
+    const std::string err = readText(dir.parent_path() / "picSolver.stderr");
+    std::vector<std::string> errors;
+    std::istringstream lines(err);
+    for (std::string line; std::getline(lines, line);)
+        if (line.rfind("Warning:", 0) != 0) errors.push_back(line);
+    ASSERT_EQ(errors.size(), 1u) << err;
+    EXPECT_EQ(errors[0].rfind("Error: run stopped by " + name + " at t = ", 0), 0u) << errors[0];
+
+    // The state written is the latest time directory, named in the message, in the index.
+    const auto times = gpic::listTimeDirectories(dir.string());
+    ASSERT_GE(times.size(), 3u);
+    const std::string last = times.back().second;
+    EXPECT_NE(errors[0].find("written to " + (dir / last).string()), std::string::npos) << errors[0];
+    EXPECT_TRUE(fs::exists(dir / last / "particles.vtp"));
+    EXPECT_NE(readText(dir / "twoDisks.pvd").find("\"" + last + "/particles.vtp\""), std::string::npos);
+    expectNoTemporaries(dir);
+
+    // A restart carries on from it to a new end.
+    const double stopped = times.back().first;
+    setEntry(dir / "system/controlDict", "endTime", std::to_string(stopped + 0.05));
+    const AppResult restart = runApplication("picSolver", dir);
+    EXPECT_EQ(restart.exitCode, 0) << restart.err;
+    EXPECT_NE(restart.out.find("starting at t = "), std::string::npos);
+    EXPECT_GT(gpic::listTimeDirectories(dir.string()).back().first, stopped);
+}
+
+} // namespace
+
+TEST(StopSignal, sigtermWritesTheCurrentStateAndExits143) { stopsCleanlyOn(SIGTERM, "SIGTERM"); }
+
+TEST(StopSignal, sigintWritesTheCurrentStateAndExits130) { stopsCleanlyOn(SIGINT, "SIGINT"); }
