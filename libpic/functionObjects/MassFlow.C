@@ -1,6 +1,7 @@
 #include "functionObjects/MassFlow.H"
 
 #include "dictionary/Dictionary.H"
+#include "dictionary/ExactNumber.H"
 
 #include <algorithm>
 
@@ -51,10 +52,24 @@ void MassFlow::start(const MpmSolver& solver, double time)
     os << "# mass in the region [kg], mass gone through the outlets [kg], outflow rate [kg/s], "
           "drain rate of the region [kg/s]; masses per metre of thickness times factor "
        << factor_ << "\n# time mass out outflowRate drainRate\n";
+    if (restarted()) return;  // the rates go on from the restored last row
     lastTime_ = time;
     lastRemoved_ = factor_ * solver.removedMass();
     lastMass_ = massInRegion(solver);
     os << time << ' ' << lastMass_ << ' ' << lastRemoved_ << " 0 0\n";
+}
+
+void MassFlow::writeState(std::ostream& os) const
+{
+    os << "    lastTime    " << exactNumber(lastTime_) << ";\n    lastRemoved " << exactNumber(lastRemoved_)
+       << ";\n    lastMass    " << exactNumber(lastMass_) << ";\n";
+}
+
+void MassFlow::readState(const Dictionary& state)
+{
+    lastTime_ = state.get<double>("lastTime");
+    lastRemoved_ = state.get<double>("lastRemoved");
+    lastMass_ = state.get<double>("lastMass");
 }
 
 void MassFlow::write(const MpmSolver& solver, double time)

@@ -5,6 +5,7 @@
 #include "core/StopSignals.H"
 #include "core/Threads.H"
 #include "core/error.H"
+#include "dictionary/ExactNumber.H"
 #include "io/GridVtk.H"
 #include "io/ParticlesVtk.H"
 #include "io/PvdCollection.H"
@@ -41,13 +42,6 @@ double peakMemoryMiB()
         status.ignore(1 << 20, '\n');
     }
     return 0.0;
-}
-
-std::string exact(double v)
-{
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.17g", v);
-    return buf;
 }
 
 //- Map the material ids stored in a time directory onto the order of constant/materials.
@@ -136,10 +130,12 @@ Simulation::Simulation(const RunOptions& options)
     readParticles(particleFile, particles, time_, &storedMaterials, &bodyNames);
     remapMaterials(particles, storedMaterials, materialNames(materials), startName + "/particles.vtp");
     const fs::path timeFile = fs::path(dir) / startName / "uniform/time";
+    double removedMass = 0;  // through the outlets before this run [kg/m]
     if (fs::exists(timeFile)) {
         const Dictionary t = Dictionary::readFile(timeFile.string(), startName + "/uniform/time");
         time_ = t.get<double>("value");
         step_ = t.get<long>("index");
+        removedMass = t.getOrDefault<double>("removedMass", 0.0);
     }
 
     // The particles a stage holds back (a restart inside a fill) belong to the scene as well.
@@ -163,6 +159,7 @@ Simulation::Simulation(const RunOptions& options)
     solver_->setTransfer(std::move(transfer));
     solver_->setCellMeanDilatation(volumetricStrain == "cellMean");
     solver_->setTime(time_);
+    solver_->setRemovedMass(removedMass);
     if (solver_->hasRotation()) solver_->setRotationSides(readRotationSides(gridDict));
     std::optional<Dictionary> rigidBodiesDict;  // kept for the stages' drivers
     if (fs::exists(fs::path(dir) / "constant/rigidBodies")) {
@@ -207,6 +204,14 @@ Simulation::Simulation(const RunOptions& options)
     context_ = RunContext{dir, startName, bodyNames, materialNames(solver_->materials())};
     if (const Dictionary* fns = controlDict_.subDictPtr("functions"))
         for (const auto& key : fns->keys()) functions_.push_back(FunctionObject::New(fns->subDict(key), context_));
+    // Their running state where picSolver wrote the start directory (not picInit's 0/).
+    const fs::path functionState = fs::path(dir) / startName / "uniform/functionObjects";
+    if (!functions_.empty() && fs::exists(functionState)) {
+        const Dictionary state =
+            Dictionary::readFile(functionState.string(), startName + "/uniform/functionObjects");
+        for (auto& f : functions_)
+            if (state.isDict(f->name())) f->restore(state.subDict(f->name()));
+    }
 
     std::ostringstream why;
     why << "cell size " << solver_->grid().minCellSize() << " m / (wave speed " << solver_->maxWaveSpeed()
@@ -243,19 +248,31 @@ void Simulation::restartGuard()
 }
 
 void Simulation::writeState(const Particles& particles, double time, long step, double deltaT,
-                            const std::string& name)
+                            double removedMass, const std::string& name)
 {
-    // The grid holds the current step's fields: written only with the current state.
-    const bool withGrid = writeGrid_ && &particles == &solver_->particles();
+    // The grid and the function objects hold the current step's: written only with it.
+    const bool current = &particles == &solver_->particles();
+    const bool withGrid = writeGrid_ && current;
     writeTimeDirectoryAtomically(options_.caseDir, name, [&](const std::string& tmp) {
         writeParticles(tmp + "/particles.vtp", particles, time, context_.materialNames, context_.bodyNames);
         if (withGrid) writeGrid(tmp + "/grid.vti", solver_->grid(), time);
         fs::create_directories(tmp + "/uniform");
         std::ofstream t(tmp + "/uniform/time");
         t << "FoamFile { version 2.0; format ascii; class dictionary; object time; }\n"
-          << "value   " << exact(time) << ";\nname    \"" << name << "\";\nindex   " << step
-          << ";\ndeltaT  " << exact(deltaT) << ";\n";
+          << "value   " << exactNumber(time) << ";\nname    \"" << name << "\";\nindex   " << step
+          << ";\ndeltaT  " << exactNumber(deltaT) << ";\n";
+        if (removedMass > 0) t << "removedMass " << exactNumber(removedMass) << ";  // [kg/m] through the outlets\n";
         if (!t) throw RunError("cannot write " + tmp + "/uniform/time");
+        if (current && !functions_.empty()) {
+            std::ofstream f(tmp + "/uniform/functionObjects");
+            f << "FoamFile { version 2.0; format ascii; class dictionary; object functionObjects; }\n";
+            for (const auto& fn : functions_) {
+                f << fn->name() << "\n{\n";
+                fn->writeState(f);
+                f << "}\n";
+            }
+            if (!f) throw RunError("cannot write " + tmp + "/uniform/functionObjects");
+        }
         if (stages_) {  // where the run is in its stages, and the sleeping particles
             stages_->writeStageFile(tmp, name);
             const Particles& dormant = stages_->pool().dormant();
@@ -328,7 +345,7 @@ void Simulation::write()
     auto timer = solver_->timers().time("output");
     const std::string name = timeDirectoryName(time_);
     const std::string& dir = options_.caseDir;
-    writeState(solver_->particles(), time_, step_, deltaT_, name);
+    writeState(solver_->particles(), time_, step_, deltaT_, solver_->removedMass(), name);
     onDisk_ = {time_, step_, name};
     PvdCollection pvd(pvdPath(dir));
     pvd.add(time_, name + "/particles.vtp", 0);
@@ -352,7 +369,7 @@ void Simulation::stop(const std::optional<StabilityTrip>& trip, const std::strin
             if (onDisk_.step != step_) write();
         } else if (const GoodState& good = guard_->lastGood(); good.step > onDisk_.step) {
             const std::string name = timeDirectoryName(good.time);
-            writeState(good.particles, good.time, good.step, good.deltaT, name);
+            writeState(good.particles, good.time, good.step, good.deltaT, good.removedMass, name);
             PvdCollection pvd(pvdPath(options_.caseDir));
             pvd.add(good.time, name + "/particles.vtp", 0);
             pvd.write();
@@ -399,7 +416,7 @@ long Simulation::run()
         } catch (const RunError& e) {
             // The particle to blame, where the guard finds one in what the solver left.
             stop(guard_->diagnose(time_, step_ + 1, deltaT_),
-                 std::string(e.what()) + " (step " + std::to_string(step_ + 1) + " from t = " + exact(time_) + " s)");
+                 std::string(e.what()) + " (step " + std::to_string(step_ + 1) + " from t = " + exactNumber(time_) + " s)");
         }
         const double tPrevious = time_;
         time_ += deltaT_;
@@ -430,7 +447,7 @@ long Simulation::run()
         }
         if (const int signal = StopSignals::received()) {
             if (!writtenLast) write();
-            throw StopRequest(signal, StopSignals::name(signal) + " at t = " + exact(time_) + " s (step " +
+            throw StopRequest(signal, StopSignals::name(signal) + " at t = " + exactNumber(time_) + " s (step " +
                                           std::to_string(step_) + "): the state is written to " +
                                           (fs::path(options_.caseDir) / onDisk_.name).string());
         }

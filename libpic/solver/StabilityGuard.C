@@ -182,6 +182,7 @@ void StabilityGuard::keep(double t, long step, double dt)
 {
     const auto begin = std::chrono::steady_clock::now();
     lastGood_.particles = solver_.particles();  // reuses the arrays' storage after the first copy
+    lastGood_.removedMass = solver_.removedMass();
     lastGood_.time = t;
     lastGood_.step = step;
     lastGood_.deltaT = dt;

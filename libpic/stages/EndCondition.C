@@ -1,6 +1,7 @@
 #include "stages/EndCondition.H"
 
 #include "dictionary/Dictionary.H"
+#include "dictionary/ExactNumber.H"
 #include "solver/MpmSolver.H"
 
 #include <algorithm>
@@ -13,13 +14,6 @@ namespace gpic {
 
 namespace {
 const char* const kindNames[] = {"endTime", "duration", "displacement", "equilibrium"};
-
-std::string exact(double v)
-{
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.17g", v);
-    return buf;
-}
 
 std::string brief(double v)
 {
@@ -159,9 +153,9 @@ bool EndCondition::reached(const MpmSolver& solver, double t, long step, double 
 
 void EndCondition::writeProgress(std::ostream& os, const std::string& indent) const
 {
-    os << indent << "startTime " << exact(tStart_) << ";\n"
+    os << indent << "startTime " << exactNumber(tStart_) << ";\n"
        << indent << "startStep " << stepStart_ << ";\n"
-       << indent << "centre (" << exact(centre0_.x()) << " " << exact(centre0_.y()) << ");\n";
+       << indent << "centre (" << exactNumber(centre0_.x()) << " " << exactNumber(centre0_.y()) << ");\n";
 }
 
 void EndCondition::readProgress(const Dictionary& d)

@@ -3,6 +3,7 @@
 #include "core/Info.H"
 #include "core/error.H"
 #include "dictionary/Dictionary.H"
+#include "dictionary/ExactNumber.H"
 #include "solver/MpmSolver.H"
 
 #include <cmath>
@@ -17,13 +18,6 @@ namespace gpic {
 namespace fs = std::filesystem;
 
 namespace {
-std::string exact(double v)
-{
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.17g", v);
-    return buf;
-}
-
 const char* const header = "# index startTime endTime startStep endStep stage type reason";
 } // namespace
 
@@ -172,7 +166,7 @@ void StageSequence::writeStageFile(const std::string& timeDir, const std::string
        << "index     " << index_ << ";\n"
        << "stage     " << (done() ? std::string("none") : stages_[index_]->name()) << ";\n"
        << "begun     " << (begun_ ? "yes" : "no") << ";\n"
-       << "startTime " << exact(startTime_) << ";\n"
+       << "startTime " << exactNumber(startTime_) << ";\n"
        << "startStep " << startStep_ << ";\n";
     if (begun_) {
         os << "progress\n{\n";
