@@ -314,6 +314,23 @@ TEST_F(BadInput, aBodyReachingOutsideTheGridIsRefused)
                    {"constant/bodies:15:", "shape", "'lowerRight'", "outside the grid", "(1.1 0.4)"});
 }
 
+TEST_F(BadInput, twoBodiesThatOverlapAreRefusedNamingBoth)
+{
+    // The lower disk moved to (0.45 0.55): 0.354 m from the upper one's centre, less than the
+    // sum of the radii (0.4 m).
+    replaceText(bodies(), "centre (0.8 0.2)", "centre (0.45 0.55)");
+    expectRejected("picInit", badInput,
+                   {"constant/bodies:15:", "shape", "body 'lowerRight' overlaps body 'upperLeft'", "particles lie inside"});
+}
+
+TEST_F(BadInput, twoBodiesThatOnlyTouchAreAccepted)
+{
+    // Centres 0.4 m apart on a line through sub-cell corners: the disks touch at (0.5 0.8).
+    replaceText(bodies(), "centre (0.8 0.2)", "centre (0.6 0.8)");
+    const AppResult r = runApplication("picInit", dir);
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+}
+
 TEST_F(BadInput, aGridTooLargeToNumberIsRefusedNamingNCells)
 {
     // 200 000 x 200 000 cells have 4e10 nodes: beyond an int's numbering, whatever the memory.

@@ -71,13 +71,14 @@ FilledBodies fillBodies(const Dictionary& bodiesDict, const Grid& grid,
                         const Vector2& gravity)
 {
     FilledBodies out;
+    std::vector<std::unique_ptr<Shape>> shapes;  //- of the bodies filled so far
     for (const auto& key : bodiesDict.keys()) {
         if (!bodiesDict.isDict(key)) bodiesDict.fail(key, "'" + key + "' is not a body sub-dictionary");
         const Dictionary& body = bodiesDict.subDict(key);
         const int bodyId = static_cast<int>(out.bodyNames.size());
         out.bodyNames.push_back(key);
         const int mat = materialIndex(body, materials);
-        const auto shape = Shape::New(body.subDict("shape"));
+        auto shape = Shape::New(body.subDict("shape"));
         const auto [lo, hi] = shape->bounds();
         // A millionth of a cell of slack: a cell size written with a few decimals (1.8/135 as
         // 0.0133333333) leaves the grid a rounding short of the shape it was sized for.
@@ -120,6 +121,20 @@ FilledBodies fillBodies(const Dictionary& bodiesDict, const Grid& grid,
                     }
         if (added == 0) body.fail("shape", "body '" + key + "' holds no particle: enlarge it or "
                                            "raise particlesPerCell");
+        // Two bodies in the same place would put twice the mass there and start interpenetrated.
+        const std::size_t first = out.particles.size() - added;
+        for (std::size_t other = 0; other < shapes.size(); ++other) {
+            std::size_t inside = 0, example = 0;
+            for (std::size_t q = first; q < out.particles.size(); ++q)
+                if (shapes[other]->inside(out.particles.x[q]) && inside++ == 0) example = q;
+            if (inside == 0) continue;
+            std::ostringstream msg;
+            msg << "body '" << key << "' overlaps body '" << out.bodyNames[other] << "': " << inside
+                << " of its particles lie inside that body's shape (the first at ("
+                << out.particles.x[example].transpose() << ")); bodies may touch but not share space";
+            body.fail("shape", msg.str());
+        }
+        shapes.push_back(std::move(shape));
     }
     if (out.bodyNames.empty()) bodiesDict.fail("", "constant/bodies defines no body");
     return out;
