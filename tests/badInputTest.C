@@ -369,6 +369,18 @@ TEST_F(BadInput, anUnreadableLatestTimeDirectoryIsNamed)
     expectRejected("picSolver", badInput, {"0.2/particles.vtp", "cannot read particles"});
 }
 
+TEST_F(BadInput, scrambledBytesInsideAParticleFileFailItsChecksum)
+{
+    // 200 bytes in the middle of the raw appended data: VTK reads them as numbers.
+    startGood();
+    const fs::path file = dir / "0.2/particles.vtp";
+    std::string bytes = readText(file);
+    const std::size_t middle = bytes.size() / 2;
+    for (std::size_t k = 0; k < 200; ++k) bytes[middle + k] = static_cast<char>(bytes[middle + k] ^ 0x5a);
+    std::ofstream(file, std::ios::binary) << bytes;
+    expectRejected("picSolver", badInput, {"0.2/particles.vtp", "cannot read particles", "checksum", "damaged"});
+}
+
 TEST_F(BadInput, aBrokenTimeFileIsNamedWithItsLine)
 {
     startGood();

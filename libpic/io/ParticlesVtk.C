@@ -1,6 +1,7 @@
 #include "io/ParticlesVtk.H"
 
 #include "io/AtomicVtkWrite.H"
+#include "io/ParticlesChecksum.H"
 #include "io/ParticlesVtkFormat.H"
 #include "particles/ParticleFields.H"
 
@@ -169,6 +170,7 @@ void writeParticles(const std::string& path, const Particles& p, double time,
     fd->AddArray(timeValue);
     fd->AddArray(stringArray("materialNames", materialNames));
     fd->AddArray(stringArray("bodyNames", bodyNames));
+    fd->AddArray(stringArray("checksum", {detail::particleDataChecksum(poly)}));
 
     vtkNew<vtkXMLPolyDataWriter> writer;
     detail::writeXmlAtomically(writer, poly, path, "particles");

@@ -1,5 +1,6 @@
 #include "io/ParticlesVtk.H"
 
+#include "io/ParticlesChecksum.H"
 #include "io/ParticlesVtkCheck.H"
 #include "io/ParticlesVtkFormat.H"
 #include "io/VtkErrorGuard.H"
@@ -124,6 +125,10 @@ void readParticles(const std::string& path, Particles& p, double& time,
     }
 
     vtkFieldData* fd = poly->GetFieldData();
+    // Files written before the checksum have none; those with one must match it.
+    if (auto* sum = vtkStringArray::SafeDownCast(fd ? fd->GetAbstractArray("checksum") : nullptr);
+        sum && sum->GetNumberOfValues() > 0 && sum->GetValue(0) != detail::particleDataChecksum(poly))
+        cannotReadParticles(path, "its data do not match the checksum written with them: the file is damaged");
     vtkDataArray* timeA = fd ? fd->GetArray("TimeValue") : nullptr;
     if (!timeA || timeA->GetNumberOfTuples() < 1)
         cannotReadParticles(path, "missing field 'TimeValue'");
