@@ -12,6 +12,12 @@ set_tests_properties(pluginExample PROPERTIES
   LABELS integration
   ENVIRONMENT "CMAKE=${CMAKE_COMMAND};CXX=${CMAKE_CXX_COMPILER}")
 
+# The dictionary parser under libFuzzer with sanitizers, a fixed number of inputs (seconds);
+# a long run for developers: tests/scripts/fuzzDictionary.sh . 5000000
+add_test(NAME fuzzDictionary
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/scripts/fuzzDictionary.sh ${PROJECT_SOURCE_DIR} 20000)
+set_tests_properties(fuzzDictionary PROPERTIES TIMEOUT 600 LABELS integration)
+
 # Each tutorial's Allrun must print its error-against-run-time table and write its plots.
 foreach(tutorial "verification/elasticBar;bar.png;error.png"
                  "verification/twoDisks;energy.png;error.png"
