@@ -369,6 +369,29 @@ TEST_F(BadInput, anUnreadableLatestTimeDirectoryIsNamed)
     expectRejected("picSolver", badInput, {"0.2/particles.vtp", "cannot read particles"});
 }
 
+TEST_F(BadInput, aFullDiskIsSaidWithThePathAndLeavesTheEarlierTimes)
+{
+    // The case on a 400 kB file system: room for the case and 0/ (about 190 kB), not for 0.1/.
+    const fs::path mount = scratch.path() / "small";
+    fs::create_directories(mount);
+    if (std::system(("mount -t tmpfs -o size=400k tmpfs '" + mount.string() + "' 2> /dev/null").c_str()) != 0)
+        GTEST_SKIP() << "cannot mount a small tmpfs here (needs root)";
+    struct Unmount {
+        fs::path at;
+        ~Unmount() { (void)std::system(("umount '" + at.string() + "'").c_str()); }
+    } unmount{mount};
+    const fs::path small = mount / "twoDisks";
+    fs::copy(dir, small, fs::copy_options::recursive);
+    dir = small;
+    ASSERT_EQ(runApplication("picInit", dir).exitCode, 0);
+    // Fill what is left but a little: the next time directory cannot fit.
+    const auto left = fs::space(mount).available;
+    if (left > 64 * 1024) std::ofstream(mount / "filler") << std::string(left - 64 * 1024, 'x');
+    const AppResult r = expectRejected("picSolver", runFailed, {"no space left on device", dir.string()});
+    EXPECT_EQ(r.err.find("vtk"), std::string::npos) << "VTK's own log: " << r.err;
+    EXPECT_TRUE(fs::exists(dir / "0/particles.vtp"));
+}
+
 TEST_F(BadInput, scrambledBytesInsideAParticleFileFailItsChecksum)
 {
     // 200 bytes in the middle of the raw appended data: VTK reads them as numbers.

@@ -4,9 +4,11 @@
 #include "io/VtkErrorGuard.H"
 
 #include <vtkDataObject.h>
+#include <vtkErrorCode.h>
 #include <vtkNew.h>
 #include <vtkXMLWriter.h>
 
+#include <cerrno>
 #include <filesystem>
 #include <system_error>
 
@@ -27,12 +29,23 @@ void writeXmlAtomically(vtkXMLWriter* writer, vtkDataObject* data, const std::st
     // Uncompressed: faster to write, and VTK 9.1 crashes (SIGFPE, huge allocations) on some
     // corrupt compressed-block headers instead of reporting an error.
     writer->SetCompressorTypeToNone();
-    const int ok = writer->Write();
+    int ok = 0;
+    errno = 0;
+    {
+        QuietVtk quiet;  // one line of ours instead of VTK's log
+        ok = writer->Write();
+    }
+    const int writeErrno = errno;
     std::error_code ec;
     if (!ok || errors->failed || writer->GetErrorCode() != 0) {
+        // A full disk is what the user must hear of, with where (before the partial file goes).
+        const auto space = std::filesystem::space(std::filesystem::path(tmp).parent_path(), ec);
+        const bool full = writeErrno == ENOSPC || writer->GetErrorCode() == vtkErrorCode::OutOfDiskSpaceError ||
+                          (!ec && space.available < 4096);
         std::filesystem::remove(tmp, ec);
-        throw RunError("cannot write " + what + " to " + path + ": " +
-                       (errors->first.empty() ? "VTK writer failed" : errors->first));
+        const std::string why = full ? "no space left on device"
+                                     : (errors->first.empty() ? "VTK writer failed" : errors->first);
+        throw RunError("cannot write " + what + " to " + path + ": " + why);
     }
     std::filesystem::rename(tmp, path, ec);
     if (ec) {

@@ -14,8 +14,10 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -262,7 +264,7 @@ void Simulation::writeState(const Particles& particles, double time, long step, 
           << "value   " << exactNumber(time) << ";\nname    \"" << name << "\";\nindex   " << step
           << ";\ndeltaT  " << exactNumber(deltaT) << ";\n";
         if (removedMass > 0) t << "removedMass " << exactNumber(removedMass) << ";  // [kg/m] through the outlets\n";
-        if (!t) throw RunError("cannot write " + tmp + "/uniform/time");
+        if (!t.flush()) throw RunError("cannot write " + tmp + "/uniform/time: " + std::strerror(errno));
         if (current && !functions_.empty()) {
             std::ofstream f(tmp + "/uniform/functionObjects");
             f << "FoamFile { version 2.0; format ascii; class dictionary; object functionObjects; }\n";
@@ -271,7 +273,7 @@ void Simulation::writeState(const Particles& particles, double time, long step, 
                 fn->writeState(f);
                 f << "}\n";
             }
-            if (!f) throw RunError("cannot write " + tmp + "/uniform/functionObjects");
+            if (!f.flush()) throw RunError("cannot write " + tmp + "/uniform/functionObjects: " + std::strerror(errno));
         }
         if (stages_) {  // where the run is in its stages, and the sleeping particles
             stages_->writeStageFile(tmp, name);
