@@ -12,6 +12,13 @@ set_tests_properties(pluginExample PROPERTIES
   LABELS integration
   ENVIRONMENT "CMAKE=${CMAKE_COMMAND};CXX=${CMAKE_CXX_COMPILER}")
 
+# A contact law and a rigid-body driver from a user's library built out of tree
+# (tests/support/scenePlugin), run in one scene against analytic checks.
+add_test(NAME scenePlugin
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/scripts/scenePlugin.sh ${PROJECT_SOURCE_DIR} ${PROJECT_BINARY_DIR})
+set_tests_properties(scenePlugin PROPERTIES TIMEOUT 600 LABELS integration
+  ENVIRONMENT "CMAKE=${CMAKE_COMMAND};CXX=${CMAKE_CXX_COMPILER}")
+
 # The dictionary parser under libFuzzer with sanitizers, a fixed number of inputs (seconds);
 # a long run for developers: tests/scripts/fuzzDictionary.sh . 5000000
 add_test(NAME fuzzDictionary
