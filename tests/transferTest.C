@@ -184,7 +184,9 @@ void expectTheEnergyOrder(const std::string& deltaT, bool withApic = true)
     const double pic = diskEnergyError("PIC", deltaT), xpic = diskEnergyError("XPIC", deltaT);
     EXPECT_LT(xpic, 0.7 * pic);
     EXPECT_LT(xpic, 0.1);  // measured 6.8 % at 1e-3 s and 7.1 % at 1e-4 s
-    if (withApic) EXPECT_LT(diskEnergyError("APIC", deltaT), 0.7 * pic);
+    if (withApic) {
+        EXPECT_LT(diskEnergyError("APIC", deltaT), 0.7 * pic);
+    }
 }
 
 } // namespace

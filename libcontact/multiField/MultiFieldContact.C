@@ -16,22 +16,25 @@ Vector2 unit(const Vector2& v)
 inline double cross(const Vector2& a, const Vector2& b) { return a.x() * b.y() - a.y() * b.x(); }
 } // namespace
 
-MultiFieldContact::MultiFieldContact(const Dictionary&, ContactParts& parts)
+MultiFieldContact::MultiFieldContact(const Dictionary& dict, ContactParts& parts)
     : ContactPass(parts.nBodies, *parts.grid), law_(std::move(parts.law)), normals_(std::move(parts.normals)),
-      normalsName_(parts.normalsName)
+      normalsName_(parts.normalsName), correctRemapped_(dict.getOrDefault<bool>("correctRemapped", false))
 {
     present_.reserve(static_cast<std::size_t>(nBodies()));
 }
 
-Vector2 MultiFieldContact::impulse(int b, int other, int n, const Vector2& vRef, const Vector2& normal, double dt)
+Vector2 MultiFieldContact::correctVelocity(int b, int other, int n, const Vector2& vRef, const Vector2& normal,
+                                           bool approachOnly)
 {
     BodyField& f = field(b);
     const Vector2 v = f.velocity[n];
-    const Vector2 vNew = law_->correct(v, vRef, normal, b, other);
-    const Vector2 dv = vNew - v;
-    f.velocity[n] = vNew;
-    f.accel[n] += dv / dt;  // G.4.1: a~ = (v~^{t+1} - v^t) / dt
-    return (f.mass[n] / dt) * dv;
+    if (approachOnly) {
+        const double D = (v - vRef).dot(normal);  // G.2.22: the normal approach speed
+        if (D > 0.0) f.velocity[n] = v - D * normal;  // G.2.3
+    } else {
+        f.velocity[n] = law_->correct(v, vRef, normal, b, other);
+    }
+    return f.velocity[n] - v;
 }
 
 int MultiFieldContact::correct(Grid& grid, const Particles& p,
@@ -39,14 +42,35 @@ int MultiFieldContact::correct(Grid& grid, const Particles& p,
                                double dt, std::vector<RigidBodyLoad>& loads)
 {
     for (auto& l : loads) l = RigidBodyLoad{};
-    const int nb = nBodies();
     contactNodes_.clear();
     for (int n : grid.active)
         if (shared(n)) contactNodes_.push_back(n);
     if (contactNodes_.empty()) return 0;
-    const auto isRigid = [&](int b) { return !rigid.empty() && rigid[b] != nullptr; };
     // Only on steps with contact: the normals where the bodies are now.
     normals_->place(grid, p);
+    correctNodes(grid, rigid, tNew, dt, &loads);
+    return static_cast<int>(contactNodes_.size());
+}
+
+void MultiFieldContact::correctRemapped(Grid& grid, const std::vector<std::unique_ptr<RigidBodyDriver>>& rigid,
+                                        double tNew)
+{
+    if (correctRemapped_ && !contactNodes_.empty()) correctNodes(grid, rigid, tNew, 0.0, nullptr);
+}
+
+void MultiFieldContact::correctNodes(Grid& grid, const std::vector<std::unique_ptr<RigidBodyDriver>>& rigid,
+                                     double tNew, double dt, std::vector<RigidBodyLoad>* loads)
+{
+    const int nb = nBodies();
+    const auto isRigid = [&](int b) { return !rigid.empty() && rigid[b] != nullptr; };
+    // The step's correction: a~ = a + (v~ - v) / dt, so v~ = v^t + dt a~ (G.4.1), and the
+    // force on body b is its impulse over dt.
+    const auto apply = [&](int b, int other, int n, const Vector2& vRef, const Vector2& normal) -> Vector2 {
+        const Vector2 dv = correctVelocity(b, other, n, vRef, normal, !loads);
+        if (!loads) return Vector2::Zero();
+        field(b).accel[n] += dv / dt;
+        return (field(b).mass[n] / dt) * dv;
+    };
 
     for (int n : contactNodes_) {
         present_.clear();
@@ -65,11 +89,12 @@ int MultiFieldContact::correct(Grid& grid, const Particles& p,
                 if (isRigid(b)) continue;
                 const Vector2 normal = normals_->towardsRigid(b, r, n, x);
                 if (normal.isZero()) continue;
-                const Vector2 f = impulse(b, r, n, vRef, normal, dt);
-                loads[b].force += f;
-                loads[b].moment += cross(x, f);
-                loads[r].force -= f;
-                loads[r].moment -= cross(x, f);
+                const Vector2 f = apply(b, r, n, vRef, normal);
+                if (!loads) continue;
+                (*loads)[b].force += f;
+                (*loads)[b].moment += cross(x, f);
+                (*loads)[r].force -= f;
+                (*loads)[r].moment -= cross(x, f);
                 grid.fContact[n] -= f;
             }
             continue;
@@ -93,13 +118,13 @@ int MultiFieldContact::correct(Grid& grid, const Particles& p,
             int other = -1;
             for (int o : present_)
                 if (o != b && (other < 0 || field(o).mass[n] > field(other).mass[n])) other = o;
-            const Vector2 f = impulse(b, other, n, vCm, normal, dt);
-            loads[b].force += f;
-            loads[b].moment += cross(x, f);
+            const Vector2 f = apply(b, other, n, vCm, normal);
+            if (!loads) continue;
+            (*loads)[b].force += f;
+            (*loads)[b].moment += cross(x, f);
             if (k == 0) grid.fContact[n] += f;
         }
     }
-    return static_cast<int>(contactNodes_.size());
 }
 
 } // namespace gpic

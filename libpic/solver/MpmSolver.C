@@ -296,6 +296,7 @@ void MpmSolver::particlesToGrid()
     applyBoundaries(grid_.velocity);
     if (contact_) bodyVelocities(time_);
     if (hasRotation_) rotationToGrid();
+    hooks_.call(StepPoint::afterParticlesToGrid, *this);
 }
 
 void MpmSolver::bodyVelocities(double t)
@@ -436,10 +437,13 @@ void MpmSolver::computeForces()
 void MpmSolver::updateGrid(double dt)
 {
     if (hasRotation_) updateRotation(dt);
-    if (contact_) {
-        updateBodyFields(dt);
-        return;
-    }
+    if (contact_) updateBodyFields(dt);
+    else updateSingleField(dt);
+    hooks_.call(StepPoint::afterGridUpdate, *this);
+}
+
+void MpmSolver::updateSingleField(double dt)
+{
     auto timer = timers_.time("gridUpdate");
     grid_.forEachActiveNode([&](int n) {
         Vector2 F = grid_.fInt[n] + grid_.fExt[n];
@@ -607,6 +611,7 @@ void MpmSolver::updateStress(double dt)
         for (std::size_t q = chunk.begin; q < chunk.end; ++q) p.work[q] += 0.5 * p.V[q] * contract(p.sigma[q], p.dEps[q]);
     }
     if (hasRotation_) addRotationWork();
+    hooks_.call(StepPoint::afterStressUpdate, *this);
 }
 
 void MpmSolver::gridToParticles(double dt)
@@ -660,6 +665,7 @@ void MpmSolver::gridToParticles(double dt)
                        ") has a non-finite velocity: the step is unstable");
     }
     if (hasRotation_) rotationToParticles(dt);
+    hooks_.call(StepPoint::afterGridToParticles, *this);
 }
 
 Vector2 MpmSolver::materialForceOnRigidNode(int n, const Vector2& vNew, double dt) const
@@ -706,7 +712,10 @@ void MpmSolver::remapVelocity(double dt)
     });
     if (drivesRigidNodes()) constrainRigidNodes(time_ + dt);
     applyBoundaries(grid_.velocity);
-    if (contact_) bodyVelocities(time_ + dt);
+    if (contact_) {
+        bodyVelocities(time_ + dt);
+        contact_->correctRemapped(grid_, rigid_, time_ + dt);
+    }
     if (p.carries(FieldGroup::affine)) {
         // APIC: C_p again, from the remapped nodal velocity: a mass-weighted mean of the
         // particles' motion, where v^{t+1} of a node that a particle barely touches holds

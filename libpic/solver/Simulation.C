@@ -205,7 +205,12 @@ Simulation::Simulation(const RunOptions& options)
 
     context_ = RunContext{dir, startName, bodyNames, materialNames(solver_->materials())};
     if (const Dictionary* fns = controlDict_.subDictPtr("functions"))
-        for (const auto& key : fns->keys()) functions_.push_back(FunctionObject::New(fns->subDict(key), context_));
+        for (const auto& key : fns->keys()) {
+            functions_.push_back(FunctionObject::New(fns->subDict(key), context_));
+            FunctionObject* f = functions_.back().get();
+            for (const StepPoint point : f->stepPoints())
+                solver_->addHook(point, [f, point](const MpmSolver& s) { f->at(point, s); });
+        }
     // Their running state where picSolver wrote the start directory (not picInit's 0/).
     const fs::path functionState = fs::path(dir) / startName / "uniform/functionObjects";
     if (!functions_.empty() && fs::exists(functionState)) {

@@ -1,8 +1,9 @@
 #!/bin/bash
-# Builds tests/support/scenePlugin (a contact law `freeSlip` and a rigid-body driver `shaker`)
-# OUT OF TREE against the installed granularPic package, as a user would, and runs a scene
-# that uses both without a file of the project touched: a plate shaken along x1 under an
-# elastic block resting on it.
+# Builds tests/support/scenePlugin (a contact law `freeSlip`, a rigid-body driver `shaker` and
+# a function object `gridMomentum` hooked after particles-to-grid and after the grid update)
+# OUT OF TREE against the installed granularPic package, as a user would, and runs without a
+# file of the project touched a scene that uses the law and the driver, a plate shaken along
+# x1 under an elastic block resting on it, and one for the function object (below).
 #   - The driver: the plate's displacement (forces' dx) is A sin(omega t) to 1e-9 m.
 #   - The law: without friction the plate cannot drag the block, so the block's x1 velocity
 #     stays below 5 % of the plate's peak A omega; the same scene with the built-in
@@ -107,4 +108,38 @@ scene "$tmp/friction" coulombFriction
 stuck="$(peakBlockSpeed "$tmp/friction/postProcessing/motion/0/bodyMotion.dat")" || fail "no block:vx rows"
 step "coulombFriction: block's peak |vx| = $stuck A omega (must exceed 0.5)"
 awk -v f="$stuck" 'BEGIN { exit !(f > 0.5) }' || fail "friction did not drag the block: the check cannot tell the laws apart"
+# The function object hooked inside the step: a block falling freely (stress-free, no side
+# reached) has grid momentum -M g t_n after particles-to-grid and -M g t_(n+1) after the grid
+# update; the check tells the two points apart (they differ by M g dt, 1/100 of the value at
+# the end), and fails if the hooks are not called at all.
+step "gridMomentum: a block falling freely, the grid's momentum at two points of the step"
+fall="$tmp/fall"
+mkdir -p "$fall/system" "$fall/constant"
+cat > "$fall/system/controlDict" <<DICT
+libs ("libscenePlugin.so");
+endTime 0.05; deltaT 5e-5; adjustTimeStep no; writeControl runTime; writeInterval 0.05;
+functions { grid { type gridMomentum; writeInterval 10; } }
+DICT
+echo "updateScheme MUSL; shapeFunction bilinear; transfer FLIP;" > "$fall/system/mpmSchemes"
+cat > "$fall/constant/grid" <<DICT
+origin (0 0); cellSize 0.005; nCells (40 20);
+boundaries { left { type free; } right { type free; } bottom { type free; } top { type free; } }
+DICT
+echo "gel { type linearElastic; rho 1000; E 1e6; nu 0.3; }" > "$fall/constant/materials"
+echo "block { material gel; shape { type rectangle; min (0.07 0.05); max (0.13 0.08); } particlesPerCell 2; }" \
+    > "$fall/constant/bodies"
+echo "value (0 -9.81);" > "$fall/constant/g"
+run "$fall.picInit.log" "$tmp/prefix/bin/picInit" -case "$fall"
+run "$fall.picSolver.log" "$tmp/prefix/bin/picSolver" -case "$fall"
+awk '
+    /^#/ || $1 == 0 { next }   # the start row: no step taken yet
+    { g = 9.81; ref = $3 * g * $1
+      before = $4 + $3 * g * $2; if (before < 0) before = -before
+      after = $5 + $3 * g * $1; if (after < 0) after = -after
+      if (before > worstB) worstB = before / ref; if (after > worstA) worstA = after / ref
+      if (!($2 < $1)) late = 1; n++ }
+    END { if (n < 50) { print "only " n " gridMomentum rows"; exit 1 }
+          printf "gridMomentum: %d rows, |p_y + M g t_n| / M g t %.2g before, |p_y + M g t_(n+1)| / M g t %.2g after the update\n", n, worstB, worstA
+          exit late || worstB > 1e-9 || worstA > 1e-9 }' \
+    "$fall/postProcessing/grid/0/gridMomentum.dat" || fail "the hooked function object did not see the grid at its points"
 step "PASS"
