@@ -19,12 +19,13 @@ InitialiseSummary initialiseCase(const std::string& dir, bool overwrite)
     const std::string start = timeName(t0);
     const Dictionary gridDict = readCaseFile(dir, "constant/grid");
     const Grid grid(gridDict);
-    readBoundaries(gridDict);  // only checked here: a bad side type fails now, not in picSolver
+    // Only checked here: a bad side type fails now, not in picSolver.
+    const auto boundaries = readBoundaries(gridDict);
     const Dictionary materialsDict = readCaseFile(dir, "constant/materials");
     const auto materials = readMaterials(materialsDict);
     for (const auto& m : materials)  // a polar scene: the sides' `rotation` keywords, checked here too
         if (m->needsRotation()) {
-            readRotationSides(gridDict);
+            readRotationSides(gridDict, mirrorSides(boundaries));
             break;
         }
     const Dictionary bodiesDict = readCaseFile(dir, "constant/bodies");

@@ -34,6 +34,13 @@ vtkSmartPointer<vtkDoubleArray> doubleArray(const char* name, int nComponents, v
     a->SetName(name);
     a->SetNumberOfComponents(nComponents);
     a->SetNumberOfTuples(n);
+    // ParaView shows these names in its colour menu and bar ("stress XY", not "stress 1").
+    static const char* const tensor[9] = {"XX", "XY", "XZ", "YX", "YY", "YZ", "ZX", "ZY", "ZZ"};
+    static const char* const vector[3] = {"X", "Y", "Z"};
+    if (nComponents == 9)
+        for (int c = 0; c < 9; ++c) a->SetComponentName(c, tensor[c]);
+    else if (nComponents == 2 || nComponents == 3)
+        for (int c = 0; c < nComponents; ++c) a->SetComponentName(c, vector[c]);
     return a;
 }
 

@@ -32,6 +32,15 @@ void vonMisesStress(const Particles& p, std::size_t q, double* out)
     out[0] = std::sqrt(3.0 * J2);
 }
 
+//- The radius of the disk of the particle's current area (its volume per unit thickness),
+//  a one-component size that ParaView's glyphs scale by (halfSize does not follow the
+//  deformation).
+void radius(const Particles& p, std::size_t q, double* out)
+{
+    constexpr double pi = 3.14159265358979323846;
+    out[0] = std::sqrt(p.V[q] / pi);
+}
+
 } // namespace
 
 const std::vector<ParticleField>& particleFields()
@@ -46,6 +55,7 @@ const std::vector<ParticleField>& particleFields()
         {"initialPosition", G::core, R::state, 3, [](Particles& p) -> FieldArray { return &p.x0; }},
         {"mass", G::core, R::state, 1, [](Particles& p) -> FieldArray { return &p.m; }},
         {"volume", G::core, R::state, 1, [](Particles& p) -> FieldArray { return &p.V; }},
+        {"radius", G::core, R::derived, 1, nullptr, nullptr, 0, radius},
         {"work", G::core, R::state, 1, [](Particles& p) -> FieldArray { return &p.work; }},
         {"halfSize", G::core, R::state, 2, [](Particles& p) -> FieldArray { return &p.halfSize; }},
         {"stress", G::core, R::state, 9, [](Particles& p) -> FieldArray { return &p.sigma; }},

@@ -1,5 +1,7 @@
 #include "solver/CaseFiles.H"
 
+#include "core/error.H"
+
 #include <algorithm>
 #include <filesystem>
 
@@ -33,6 +35,13 @@ std::array<std::unique_ptr<BoundaryCondition>, 4> readBoundaries(const Dictionar
                                                      static_cast<GridSide>(s));
     }
     return bcs;
+}
+
+std::array<bool, 4> mirrorSides(const std::array<std::unique_ptr<BoundaryCondition>, 4>& boundaries)
+{
+    std::array<bool, 4> mirror{};
+    for (std::size_t s = 0; s < 4; ++s) mirror[s] = boundaries[s]->isMirror();
+    return mirror;
 }
 
 std::vector<std::unique_ptr<RigidBodyDriver>> readRigidBodies(const Dictionary& dict,
@@ -83,7 +92,23 @@ std::string caseName(const std::string& caseDir)
 
 std::string pvdPath(const std::string& caseDir)
 {
-    return (std::filesystem::path(caseDir) / (caseName(caseDir) + ".pvd")).string();
+    namespace fs = std::filesystem;
+    const fs::path own = fs::path(caseDir) / (caseName(caseDir) + ".pvd");
+    if (fs::exists(own)) return own.string();
+    // A case copied under another name keeps the index it came with (ParaView opens that one).
+    std::vector<std::string> found;
+    std::error_code ec;
+    for (const auto& entry : fs::directory_iterator(caseDir, ec))
+        if (entry.path().extension() == ".pvd" && entry.is_regular_file(ec)) found.push_back(entry.path().filename().string());
+    std::sort(found.begin(), found.end());
+    if (found.size() == 1) return (fs::path(caseDir) / found.front()).string();
+    if (found.size() > 1) {
+        std::string list;
+        for (const auto& f : found) list += (list.empty() ? "" : ", ") + f;
+        throw RunError("case " + caseDir + " holds several ParaView indexes (" + list + ") and none named " +
+                       own.filename().string() + ": keep the one to go on with (picListTimes -rebuild writes it afresh)");
+    }
+    return own.string();
 }
 
 std::vector<std::string> materialNames(const std::vector<std::unique_ptr<Material>>& materials)

@@ -29,13 +29,13 @@ void CosseratField::allocate(int nNodes)
     fixed.assign(n, 0);
 }
 
-std::array<bool, 4> readRotationSides(const Dictionary& gridDict)
+std::array<bool, 4> readRotationSides(const Dictionary& gridDict, const std::array<bool, 4>& mirror)
 {
     std::array<bool, 4> fixed{};
     const Dictionary& sides = gridDict.subDict("boundaries");
     for (int s = 0; s < 4; ++s) {
         const Dictionary& side = sides.subDict(gridSideNames()[s]);
-        const std::string deflt = side.get<std::string>("type") == "symmetry" ? "fixed" : "free";
+        const std::string deflt = mirror[s] ? "fixed" : "free";
         fixed[s] = side.getWordOrDefault("rotation", {"fixed", "free"}, deflt) == "fixed";
     }
     return fixed;

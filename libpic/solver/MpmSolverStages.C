@@ -1,5 +1,6 @@
 // What a run in stages changes in the engine between two steps: the set of particles (layers
-// filled or dug away, bodies woken or put to sleep) and the openings of the sides (gates).
+// filled or dug away, bodies woken or put to sleep) and the openings of the sides (gates);
+// and the grid of a state written between steps.
 #include "solver/MpmSolver.H"
 
 #include "core/error.H"
@@ -16,6 +17,19 @@ void MpmSolver::replaceParticles(Particles particles)
     particles_ = std::move(particles);
     matchAffine();
     setUpParticles();  // as the constructor: a restart of this state steps bitwise alike
+}
+
+void MpmSolver::projectToGrid()
+{
+    struct Restore {  // the hooks come back however the projection ends
+        StepHooks& hooks;
+        StepHooks held;
+        ~Restore() { std::swap(hooks, held); }
+    } restore{hooks_, {}};
+    std::swap(hooks_, restore.held);
+    computeWeights();
+    particlesToGrid();
+    computeForces();
 }
 
 void MpmSolver::refreshOpenings()

@@ -153,6 +153,7 @@ Simulation::Simulation(const RunOptions& options)
     bool dormantPolar = false;
     for (int m : dormant.material) dormantPolar = dormantPolar || materials[static_cast<std::size_t>(m)]->needsRotation();
 
+    const std::array<bool, 4> mirror = mirrorSides(boundaries);
     solver_ = std::make_unique<MpmSolver>(std::move(grid), std::move(particles), std::move(materials),
                                           std::move(shape), std::move(boundaries));
     if (dormantPolar) solver_->enableRotation();
@@ -162,7 +163,7 @@ Simulation::Simulation(const RunOptions& options)
     solver_->setCellMeanDilatation(volumetricStrain == "cellMean");
     solver_->setTime(time_);
     solver_->setRemovedMass(removedMass);
-    if (solver_->hasRotation()) solver_->setRotationSides(readRotationSides(gridDict));
+    if (solver_->hasRotation()) solver_->setRotationSides(readRotationSides(gridDict, mirror));
     std::optional<Dictionary> rigidBodiesDict;  // kept for the stages' drivers
     if (fs::exists(fs::path(dir) / "constant/rigidBodies")) {
         rigidBodiesDict = readCaseFile(dir, "constant/rigidBodies");
@@ -379,6 +380,10 @@ void Simulation::stop(const std::optional<StabilityTrip>& trip, const std::strin
             writeState(good.particles, good.time, good.step, good.deltaT, good.removedMass, name);
             PvdCollection pvd(pvdPath(options_.caseDir));
             pvd.add(good.time, name + "/particles.vtp", 0);
+            if (writeGrid_) {
+                writeGoodStateGrid(good, (fs::path(options_.caseDir) / name / "grid.vti").string());
+                pvd.add(good.time, name + "/grid.vti", 1);
+            }
             pvd.write();
             onDisk_ = {good.time, good.step, name};
         }
@@ -388,6 +393,22 @@ void Simulation::stop(const std::optional<StabilityTrip>& trip, const std::strin
         where << "; the last good state could not be written: " << e.what();
     }
     throw RunError((trip ? trip->message : solverMessage) + where.str());
+}
+
+void Simulation::writeGoodStateGrid(const GoodState& good, const std::string& path)
+{
+    // The run ends here: the engine may take the good state's particles to project them.
+    if (!solver_->hasLoads()) {
+        solver_->replaceParticles(good.particles);
+        solver_->setTime(good.time);
+        solver_->projectToGrid();
+        writeGrid(path, solver_->grid(), good.time);
+        return;
+    }
+    // Loads hold particle indices: the grid's place and size, with empty fields.
+    Grid empty = solver_->grid();
+    empty.resetFields();
+    writeGrid(path, empty, good.time);
 }
 
 long Simulation::run()
@@ -402,6 +423,14 @@ long Simulation::run()
         PvdCollection pvd(pvdPath(options_.caseDir));
         pvd.removeAfter(time_);
         pvd.add(time_, context_.startTimeName + "/particles.vtp", 0);
+        if (writeGrid_) {  // every time of the index has the same parts: the start its grid too
+            const fs::path startGrid = fs::path(options_.caseDir) / context_.startTimeName / "grid.vti";
+            if (!fs::exists(startGrid)) {
+                solver_->projectToGrid();
+                writeGrid(startGrid.string(), solver_->grid(), time_);
+            }
+            pvd.add(time_, context_.startTimeName + "/grid.vti", 1);
+        }
         pvd.write();
     }
     if (stages_) stages_->start(*solver_, time_, step_);  // begins a stage, or carries one on
