@@ -121,7 +121,7 @@ void MpmSolver::filterVelocity(double dt, int order)
             // A node a rigid tool drives keeps the velocity the update started from.
             if (drivesRigidNodes())
                 for (int n : grid_.active)
-                    if (rigidNodeBody_[n] >= 0) next[n] = v[n] - dt * a[n];
+                    if (rigidNodes_.bodyAt(n) >= 0) next[n] = v[n] - dt * a[n];
             grid_.forEachActiveNode([&](int n) {
                 filtered_[f][n] += coefficient * next[n];
             });
@@ -245,12 +245,7 @@ void MpmSolver::particlesToGrid()
 {
     auto timer = timers_.time("particlesToGrid");
     const bool driven = drivesRigidNodes();
-    if (driven)
-        for (int n : grid_.active) {
-            rigidNodeBody_[n] = -1;
-            rigidMass_[n] = 0.0;
-            rigidMomentum_[n].setZero();
-        }
+    if (driven) rigidNodes_.reset(grid_.active);
     if (contact_) contact_->reset(grid_.active);
     grid_.resetFields();
     const Particles& p = particles_;
@@ -269,11 +264,7 @@ void MpmSolver::particlesToGrid()
                 body->momentum[n] += (N * p.m[q]) * v;
                 continue;
             }
-            if (driven && rigid_[p.body[q]]) {
-                if (N > 0.0) rigidNodeBody_[n] = p.body[q];
-                rigidMass_[n] += N * p.m[q];
-                rigidMomentum_[n] += (N * p.m[q]) * v;
-            }
+            if (driven && rigid_[p.body[q]]) rigidNodes_.add(n, p.body[q], N, N * p.m[q], v);
             grid_.mass[n] += N * p.m[q];             // lumped mass, row sums of eq. 2.3.7
             grid_.momentum[n] += (N * p.m[q]) * v;  // eq. 2.4.1
         }
@@ -292,7 +283,7 @@ void MpmSolver::particlesToGrid()
     grid_.forEachActiveNode([&](int n) {
         grid_.velocity[n] = grid_.mass[n] > 0.0 ? Vector2(grid_.momentum[n] / grid_.mass[n]) : Vector2::Zero();
     });
-    if (driven) constrainRigidNodes(time_);
+    if (driven) rigidNodes_.constrain(grid_, rigid_, time_);
     applyBoundaries(grid_.velocity);
     if (contact_) bodyVelocities(time_);
     if (hasRotation_) rotationToGrid();
@@ -327,10 +318,7 @@ void MpmSolver::setContact(std::unique_ptr<ContactPass> pass)
 void MpmSolver::allocateExchange()
 {
     const auto nodes = static_cast<std::size_t>(grid_.nNodes());
-    const std::size_t driven = drivesRigidNodes() ? nodes : 0;
-    std::vector<int>(driven, -1).swap(rigidNodeBody_);
-    std::vector<double>(driven, 0.0).swap(rigidMass_);
-    std::vector<Vector2>(driven, Vector2::Zero()).swap(rigidMomentum_);
+    rigidNodes_.allocate(drivesRigidNodes() ? nodes : 0);
     grid_.fContact.assign(!rigid_.empty() || contact_ ? nodes : 0, Vector2::Zero());
     rigidLoads_.assign(contact_ ? static_cast<std::size_t>(contact_->nBodies()) : rigid_.size(), RigidBodyLoad{});
 }
@@ -379,13 +367,6 @@ void MpmSolver::markDeformingMaterials()
     // No deformable particle yet (a fill whose layers all sleep): every material counts, so
     // the time step stays finite and on the safe side.
     if (!any) materialDeforms_.assign(materials_.size(), 1);
-}
-
-void MpmSolver::constrainRigidNodes(double t)
-{
-    for (int n : grid_.active)
-        if (rigidNodeBody_[n] >= 0)
-            grid_.velocity[n] = rigid_[rigidNodeBody_[n]]->velocity(t, grid_.nodePosition(n));
 }
 
 void MpmSolver::setLoads(std::vector<std::unique_ptr<ParticleLoad>> loads,
@@ -460,27 +441,8 @@ void MpmSolver::updateSingleField(double dt)
         grid_.accel[n] = grid_.mass[n] > minNodalMass_ ? Vector2(F / grid_.mass[n])
                                                        : Vector2::Zero();  // eq. 2.4.2
     });
-    if (!rigid_.empty()) {  // rigid nodes: the acceleration that brings them to the body's velocity
-        for (auto& load : rigidLoads_) load = RigidBodyLoad{};
-        for (int n : grid_.active) {
-            const int b = rigidNodeBody_[n];
-            if (b < 0) continue;
-            const Vector2 x = grid_.nodePosition(n);
-            const Vector2 vNew = rigid_[b]->velocity(time_ + dt, x);
-            const Vector2 f = materialForceOnRigidNode(n, vNew, dt);
-            grid_.fContact[n] = f;
-            rigidLoads_[b].force += f;
-            rigidLoads_[b].moment += x.x() * f.y() - x.y() * f.x();
-            // The material's particles take the contact impulse (FLIP update): the acceleration
-            // brings the material's own nodal velocity, not the body's, to the body's new one.
-            const double materialMass = grid_.mass[n] - rigidMass_[n];
-            const Vector2 vMaterial = materialMass > minNodalMass_
-                                          ? Vector2((grid_.momentum[n] - rigidMomentum_[n]) / materialMass)
-                                          : grid_.velocity[n];
-            grid_.accel[n] = (vNew - vMaterial) / dt;
-            grid_.velocity[n] = vMaterial;
-        }
-    }
+    // Rigid nodes: the acceleration that brings them to the body's velocity.
+    if (!rigid_.empty()) rigidNodes_.update(grid_, rigid_, time_ + dt, dt, gravity_, minNodalMass_, rigidLoads_);
     grid_.forEachActiveNode([&](int n) {
         grid_.velocity[n] += dt * grid_.accel[n];  // eq. 2.4.3
     });
@@ -668,15 +630,6 @@ void MpmSolver::gridToParticles(double dt)
     hooks_.call(StepPoint::afterGridToParticles, *this);
 }
 
-Vector2 MpmSolver::materialForceOnRigidNode(int n, const Vector2& vNew, double dt) const
-{
-    const double materialMass = grid_.mass[n] - rigidMass_[n];
-    const Vector2 materialMomentum = grid_.momentum[n] - rigidMomentum_[n];
-    // Rigid particles carry no stress: their only nodal force is their weight.
-    const Vector2 materialForce = grid_.fInt[n] + grid_.fExt[n] - rigidMass_[n] * gravity_;
-    return materialForce - (materialMass * vNew - materialMomentum) / dt;
-}
-
 void MpmSolver::advanceRigidBodies(double dt)
 {
     for (std::size_t b = 0; b < rigid_.size(); ++b)
@@ -710,7 +663,7 @@ void MpmSolver::remapVelocity(double dt)
     grid_.forEachActiveNode([&](int n) {
         grid_.velocity[n] = grid_.mass[n] > 0.0 ? Vector2(grid_.momentum[n] / grid_.mass[n]) : Vector2::Zero();
     });
-    if (drivesRigidNodes()) constrainRigidNodes(time_ + dt);
+    if (drivesRigidNodes()) rigidNodes_.constrain(grid_, rigid_, time_ + dt);
     applyBoundaries(grid_.velocity);
     if (contact_) {
         bodyVelocities(time_ + dt);

@@ -130,7 +130,7 @@ void MpmSolver::rotationToGrid()
     };
     if (drivesRigidNodes()) {
         for (int n : grid_.active)
-            if (rigidNodeBody_[n] >= 0 && rigidFixed(rigidNodeBody_[n])) r.fixed[n] = 1;
+            if (rigidNodes_.bodyAt(n) >= 0 && rigidFixed(rigidNodes_.bodyAt(n))) r.fixed[n] = 1;
     } else if (contact_ && !rigid_.empty()) {
         for (int b = 0; b < contact_->nBodies(); ++b)
             if (rigid_[b] && rigidFixed(b))
