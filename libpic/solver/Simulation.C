@@ -178,6 +178,12 @@ Simulation::Simulation(const RunOptions& options)
         ContactScene scene{dir, bodyNames, {}};
         for (int b = 0; b < scene.nBodies(); ++b) scene.rigid.push_back(solver_->rigidBody(b) != nullptr);
         solver_->setContact(ContactPass::New(contactDict, scene, solver_->grid()));
+        // MUSL's remapped velocities and the multi-field pass: a choice a scene has to make.
+        if (solver_->contact() && schemeName == "MUSL" && !contactDict.found("correctRemapped") &&
+            contactDict.getOrDefault<std::string>("algorithm", "multiField") == "multiField")
+            warning(contactDict.fileName(), 0,
+                    "keyword 'correctRemapped' not given (default no): under MUSL a body resting on another "
+                    "gains energy unless it is 'yes'; 'no' keeps the seed's contact pass (doc/contact.md)");
         contactDict.warnUnused();
     }
 

@@ -86,7 +86,7 @@ def main():
           'floor { type fixed; }\nleft  { type fixed; }\nright { type fixed; }\n')
     write(case, 'constant/contactProperties',
           '// Corn on steel: mu = tan 14 = 0.249 (seed table 6.1); the sides smooth, the floor rough.\n'
-          'law coulombFriction;\nnormals rigidSurface;\nmu 0.249;\n'
+          'law coulombFriction;\nnormals rigidSurface;\nmu 0.249;\ncorrectRemapped no;   // as the upright run (doc/contact.md)\n'
           'pairs\n{\n    left  { bodies (corn left); mu 0; }\n    right { bodies (corn right); mu 0; }\n'
           '    floor { bodies (corn floor); mu 1; }\n}\n')
     write(case, 'system/controlDict',
