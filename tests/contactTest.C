@@ -342,3 +342,29 @@ TEST(ContactUnderMusl, aBlockRestingOnAFixedRigidPlateStaysAtRest)
                   << " mm, peak Ek " << peakEk << " J/m\n";
     }
 }
+
+// Under MUSL the remapped velocities are a choice the scene has to make: a contactProperties
+// without `correctRemapped` is warned of once (not every step), one that names it is not, and
+// a scheme that remaps nothing (USL) does not ask.
+TEST(ContactUnderMusl, aSceneThatDoesNotChooseCorrectRemappedIsWarnedOnce)
+{
+    ScratchDir scratch("remapChoice");
+    const std::vector<std::tuple<std::string, std::string, std::string, std::size_t>> cases = {
+        {"unchosen", "MUSL", "law coulombFriction; mu 0.3;", 1},
+        {"chosen", "MUSL", "law coulombFriction; mu 0.3; correctRemapped no;", 0},
+        {"usl", "USL", "law coulombFriction; mu 0.3;", 0}};
+    for (const auto& [name, scheme, contact, expected] : cases) {
+        SCOPED_TRACE(name);
+        const fs::path dir = blockOnPlate(scratch.path() / name, contact);
+        setEntry(dir / "system/controlDict", "endTime", "0.005");
+        writeDictionary(dir / "system/mpmSchemes", "updateScheme " + scheme + "; shapeFunction bilinear;\n");
+        testing::internal::CaptureStderr();
+        runAndKeep(dir);
+        const std::string err = testing::internal::GetCapturedStderr();
+        std::size_t count = 0;
+        for (auto at = err.find("'correctRemapped' not given"); at != std::string::npos;
+             at = err.find("'correctRemapped' not given", at + 1))
+            ++count;
+        EXPECT_EQ(count, expected) << err;
+    }
+}

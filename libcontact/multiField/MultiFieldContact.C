@@ -1,5 +1,7 @@
 #include "multiField/MultiFieldContact.H"
 
+#include "core/error.H"
+
 #include <cmath>
 
 namespace gpic {
@@ -18,7 +20,8 @@ inline double cross(const Vector2& a, const Vector2& b) { return a.x() * b.y() -
 
 MultiFieldContact::MultiFieldContact(const Dictionary& dict, ContactParts& parts)
     : ContactPass(parts.nBodies, *parts.grid), law_(std::move(parts.law)), normals_(std::move(parts.normals)),
-      normalsName_(parts.normalsName), correctRemapped_(dict.getOrDefault<bool>("correctRemapped", false))
+      normalsName_(parts.normalsName), correctRemapped_(dict.getOrDefault<bool>("correctRemapped", false)),
+      remappedChoiceMade_(dict.found("correctRemapped")), fileName_(dict.fileName())
 {
     present_.reserve(static_cast<std::size_t>(nBodies()));
 }
@@ -55,6 +58,13 @@ int MultiFieldContact::correct(Grid& grid, const Particles& p,
 void MultiFieldContact::correctRemapped(Grid& grid, const std::vector<std::unique_ptr<RigidBodyDriver>>& rigid,
                                         double tNew)
 {
+    if (!remappedChoiceMade_) {  // the scheme remaps (MUSL): a choice the scene has to make
+        remappedChoiceMade_ = true;
+        warning(fileName_, 0,
+                "keyword 'correctRemapped' not given (default no): with velocities remapped from the particles "
+                "(MUSL) a body resting on another gains energy unless it is 'yes'; 'no' keeps the seed's contact "
+                "pass (doc/contact.md)");
+    }
     if (correctRemapped_ && !contactNodes_.empty()) correctNodes(grid, rigid, tNew, 0.0, nullptr);
 }
 

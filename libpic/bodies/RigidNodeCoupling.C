@@ -24,16 +24,6 @@ void RigidNodeCoupling::constrain(Grid& grid, const Drivers& rigid, double t) co
         if (body_[n] >= 0) grid.velocity[n] = rigid[body_[n]]->velocity(t, grid.nodePosition(n));
 }
 
-Vector2 RigidNodeCoupling::materialForce(const Grid& grid, int n, const Vector2& vNew, double dt,
-                                         const Vector2& gravity) const
-{
-    const double materialMass = grid.mass[n] - mass_[n];
-    const Vector2 materialMomentum = grid.momentum[n] - momentum_[n];
-    // Rigid particles carry no stress: their only nodal force is their weight.
-    const Vector2 force = grid.fInt[n] + grid.fExt[n] - mass_[n] * gravity;
-    return force - (materialMass * vNew - materialMomentum) / dt;
-}
-
 void RigidNodeCoupling::update(Grid& grid, const Drivers& rigid, double tNew, double dt, const Vector2& gravity,
                                double minNodalMass, std::vector<RigidBodyLoad>& loads) const
 {
@@ -43,14 +33,19 @@ void RigidNodeCoupling::update(Grid& grid, const Drivers& rigid, double tNew, do
         if (b < 0) continue;
         const Vector2 x = grid.nodePosition(n);
         const Vector2 vNew = rigid[b]->velocity(tNew, x);
-        const Vector2 f = materialForce(grid, n, vNew, dt, gravity);
+        const double materialMass = grid.mass[n] - mass_[n];
+        const Vector2 materialMomentum = grid.momentum[n] - momentum_[n];
+        // The force the material exerts on the body (seed A14): its nodal force (rigid
+        // particles carry no stress, only their weight) less the rate of the impulse that
+        // brings its momentum to the body's velocity.
+        const Vector2 materialForce = grid.fInt[n] + grid.fExt[n] - mass_[n] * gravity;
+        const Vector2 f = materialForce - (materialMass * vNew - materialMomentum) / dt;
         grid.fContact[n] = f;
         loads[b].force += f;
         loads[b].moment += x.x() * f.y() - x.y() * f.x();
         // The material's particles take the contact impulse (FLIP update): the acceleration
         // brings the material's own nodal velocity, not the body's, to the body's new one.
-        const double materialMass = grid.mass[n] - mass_[n];
-        const Vector2 vMaterial = materialMass > minNodalMass ? Vector2((grid.momentum[n] - momentum_[n]) / materialMass)
+        const Vector2 vMaterial = materialMass > minNodalMass ? Vector2(materialMomentum / materialMass)
                                                               : grid.velocity[n];
         grid.accel[n] = (vNew - vMaterial) / dt;
         grid.velocity[n] = vMaterial;

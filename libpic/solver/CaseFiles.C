@@ -90,6 +90,14 @@ std::string caseName(const std::string& caseDir)
     return p.filename().string();
 }
 
+std::optional<StoredTime> readStoredTime(const std::string& caseDir, const std::string& timeName)
+{
+    const std::filesystem::path file = std::filesystem::path(caseDir) / timeName / "uniform/time";
+    if (!std::filesystem::exists(file)) return std::nullopt;
+    const Dictionary t = Dictionary::readFile(file.string(), timeName + "/uniform/time");
+    return StoredTime{t.get<double>("value"), t.get<long>("index"), t.getOrDefault<double>("removedMass", 0.0)};
+}
+
 std::string pvdPath(const std::string& caseDir)
 {
     namespace fs = std::filesystem;

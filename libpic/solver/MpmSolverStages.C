@@ -21,15 +21,12 @@ void MpmSolver::replaceParticles(Particles particles)
 
 void MpmSolver::projectToGrid()
 {
-    struct Restore {  // the hooks come back however the projection ends
-        StepHooks& hooks;
-        StepHooks held;
-        ~Restore() { std::swap(hooks, held); }
-    } restore{hooks_, {}};
-    std::swap(hooks_, restore.held);
+    // A failure here (a particle outside the grid) ends the run, hooks muted or not.
+    hooks_.mute(true);
     computeWeights();
     particlesToGrid();
     computeForces();
+    hooks_.mute(false);
 }
 
 void MpmSolver::refreshOpenings()

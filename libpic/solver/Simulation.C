@@ -131,13 +131,11 @@ Simulation::Simulation(const RunOptions& options)
     const std::string particleFile = (fs::path(dir) / startName / "particles.vtp").string();
     readParticles(particleFile, particles, time_, &storedMaterials, &bodyNames);
     remapMaterials(particles, storedMaterials, materialNames(materials), startName + "/particles.vtp");
-    const fs::path timeFile = fs::path(dir) / startName / "uniform/time";
     double removedMass = 0;  // through the outlets before this run [kg/m]
-    if (fs::exists(timeFile)) {
-        const Dictionary t = Dictionary::readFile(timeFile.string(), startName + "/uniform/time");
-        time_ = t.get<double>("value");
-        step_ = t.get<long>("index");
-        removedMass = t.getOrDefault<double>("removedMass", 0.0);
+    if (const auto stored = readStoredTime(dir, startName)) {
+        time_ = stored->value;
+        step_ = stored->index;
+        removedMass = stored->removedMass;
     }
 
     // The particles a stage holds back (a restart inside a fill) belong to the scene as well.
@@ -178,12 +176,6 @@ Simulation::Simulation(const RunOptions& options)
         ContactScene scene{dir, bodyNames, {}};
         for (int b = 0; b < scene.nBodies(); ++b) scene.rigid.push_back(solver_->rigidBody(b) != nullptr);
         solver_->setContact(ContactPass::New(contactDict, scene, solver_->grid()));
-        // MUSL's remapped velocities and the multi-field pass: a choice a scene has to make.
-        if (solver_->contact() && schemeName == "MUSL" && !contactDict.found("correctRemapped") &&
-            contactDict.getOrDefault<std::string>("algorithm", "multiField") == "multiField")
-            warning(contactDict.fileName(), 0,
-                    "keyword 'correctRemapped' not given (default no): under MUSL a body resting on another "
-                    "gains energy unless it is 'yes'; 'no' keeps the seed's contact pass (doc/contact.md)");
         contactDict.warnUnused();
     }
 

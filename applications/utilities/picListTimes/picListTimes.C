@@ -2,7 +2,6 @@
 // all but the first, and drops them from the ParaView index, to rerun a case from its start;
 // with -rebuild writes the ParaView index afresh from the time directories.
 #include "applicationMain.H"
-#include "dictionary/Dictionary.H"
 #include "io/PvdCollection.H"
 #include "io/TimeDirectories.H"
 #include "solver/CaseFiles.H"
@@ -13,15 +12,6 @@
 namespace {
 
 namespace fs = std::filesystem;
-
-//- The time a directory holds: uniform/time's exact value where picSolver wrote one (the
-//  name may be rounded), else the name's.
-double storedTime(const std::string& dir, const std::pair<double, std::string>& time)
-{
-    const fs::path file = fs::path(dir) / time.second / "uniform/time";
-    if (!fs::exists(file)) return time.first;
-    return gpic::Dictionary::readFile(file.string(), time.second + "/uniform/time").get<double>("value");
-}
 
 //- The index of every time directory with its particles, and the grid of every one where
 //  all of them have one (ParaView takes the parts from the first time: they must agree).
@@ -40,7 +30,9 @@ void rebuildIndex(const std::string& dir)
             ++missing;
             continue;
         }
-        const double t = storedTime(dir, time);
+        // uniform/time's exact value where picSolver wrote one (the name may be rounded).
+        const auto stored = gpic::readStoredTime(dir, time.second);
+        const double t = stored ? stored->value : time.first;
         pvd.add(t, time.second + "/particles.vtp", 0);
         if (everyGrid) pvd.add(t, time.second + "/grid.vti", 1);
     }
