@@ -19,7 +19,7 @@ from paraview.simple import (ColorBy, ExtractBlock, GetActiveViewOrCreate, GetAn
 
 
 def find_index(case):
-    """The .pvd of a case directory, by the rule of picSolver (solver/CaseFiles.H)."""
+    """The .pvd of a case directory, by the rule of picSolver (case/CaseFiles.H)."""
     if case.endswith(".pvd"):
         return case
     case = os.path.abspath(case)

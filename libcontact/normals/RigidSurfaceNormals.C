@@ -1,6 +1,6 @@
 #include "normals/RigidSurfaceNormals.H"
 
-#include "solver/CaseFiles.H"
+#include "case/CaseFiles.H"
 
 namespace gpic {
 

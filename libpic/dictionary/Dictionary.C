@@ -12,7 +12,7 @@ namespace gpic {
 
 namespace {
 //- Kept apart from `keys()`: the header describes the file, not the case.
-const char* const header = "FoamFile";
+const char* const header = Dictionary::headerKeyword;
 
 std::string joined(const std::vector<std::string>& words)
 {
@@ -284,6 +284,13 @@ std::string Dictionary::toString(int indent) const
         }
     }
     return out.str();
+}
+
+std::string fileHeader(const std::string& object, const std::string& location)
+{
+    std::string line = std::string(Dictionary::headerKeyword) + " { version 2.0; format ascii; class dictionary; ";
+    if (!location.empty()) line += "location \"" + location + "\"; ";
+    return line + "object " + object + "; }\n";
 }
 
 } // namespace gpic

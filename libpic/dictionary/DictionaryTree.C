@@ -85,7 +85,7 @@ const Entry* DictionaryParser::likelyTypo(const Dictionary& dict, const std::str
     const Entry* best = nullptr;
     std::size_t bestDistance = allowed + 1;
     for (const Entry& e : dict.entries_) {
-        if (e.used || e.keyword == "FoamFile") continue;  // the header describes the file
+        if (e.used || e.keyword == Dictionary::headerKeyword) continue;  // the header describes the file
         const std::size_t distance = lowered(e.keyword) == lowered(keyword) ? 0 : editDistance(e.keyword, keyword);
         if (distance < bestDistance) {
             best = &e;

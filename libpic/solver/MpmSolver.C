@@ -20,7 +20,7 @@ inline double contract(const SymTensor& s, const SymTensor& e)
 }
 } // namespace
 
-void MpmSolver::setTransfer(std::unique_ptr<ParticleTransfer> transfer)
+void MpmSolver::useTransfer(std::unique_ptr<ParticleTransfer> transfer)
 {
     transfer_ = std::move(transfer);
     matchAffine();
@@ -130,21 +130,45 @@ void MpmSolver::filterVelocity(double dt, int order)
     }
 }
 
-MpmSolver::MpmSolver(Grid grid, Particles particles,
-                     std::vector<std::unique_ptr<Material>> materials,
-                     std::unique_ptr<ShapeFunction> shape,
-                     std::array<std::unique_ptr<BoundaryCondition>, 4> boundaries)
-    : grid_(std::move(grid)), particles_(std::move(particles)), materials_(std::move(materials)),
-      shape_(std::move(shape)), boundaries_(std::move(boundaries)), strips_(grid_),
+bool MpmSolver::needsRotation(const Particles& particles, const std::vector<std::unique_ptr<Material>>& materials)
+{
+    // A polar material that constant/materials lists but no body uses costs nothing.
+    for (int m : particles.material)
+        if (m >= 0 && m < static_cast<int>(materials.size()) && materials[m]->needsRotation()) return true;
+    return false;
+}
+
+MpmSolver::MpmSolver(SolverInputs in)
+    : grid_(std::move(in.grid)), particles_(std::move(in.particles)), materials_(std::move(in.materials)),
+      shape_(std::move(in.shape)), boundaries_(std::move(in.boundaries)), strips_(grid_),
       transfer_(std::make_unique<FlipTransfer>(Dictionary::parse("transfer FLIP;", "the seed's FLIP")))
 {
     refreshOpenings();  // the constrained side nodes
-    // The rotation field only where a particle of a polar material is in the scene: a polar
-    // material that constant/materials lists but no body uses costs nothing.
-    for (int m : particles_.material)
-        if (m >= 0 && m < static_cast<int>(materials_.size()) && materials_[m]->needsRotation()) hasRotation_ = true;
+    hasRotation_ = needsRotation(particles_, materials_);
     setupRotation();  // polar scenes only
     setUpParticles();
+    if (in.carryRotation) enableRotation();
+    // The order matters: the rigid bodies' mass properties take gravity, the contact pass's
+    // arrays the rigid bodies.
+    gravity_ = in.gravity;
+    damping_ = in.damping;
+    if (in.transfer) useTransfer(std::move(in.transfer));
+    if (in.cellMeanDilatation) cellMean_ = std::make_unique<CellMeanDilatation>();
+    time_ = in.time;
+    removedMass_ = in.removedMass;
+    if (hasRotation_ && in.rotationSides) rotation_.sideFixed = *in.rotationSides;
+    if (hasRotation_ && !in.rigidRotation.empty()) rotation_.rigidFixed = std::move(in.rigidRotation);
+    if (!in.rigidBodies.empty()) setRigidBodies(std::move(in.rigidBodies));
+    if (!in.loads.empty()) useLoads(std::move(in.loads), in.bodyNames);
+    useContact(std::move(in.contact));
+}
+
+void MpmSolver::enableRotation()
+{
+    if (hasRotation_) return;
+    hasRotation_ = true;
+    setupRotation();
+    setupRotationParticles();
 }
 
 void MpmSolver::setUpParticles()
@@ -198,10 +222,10 @@ void MpmSolver::sortParticles()
     const auto n = static_cast<long>(p.size());
     sortKey_.resize(p.size());
     const long nCells = grid_.nCells();
-#pragma omp parallel for schedule(static) if (n >= minParallelWork())
-    for (long q = 0; q < n; ++q)
+    parallelFor(n, [&](long q) {
         sortKey_[q] = grid_.contains(p.x[q]) ? p.material[q] * nCells + strips_.cellKey(grid_, p.x[q])
                                              : p.material[q] * nCells;  // reported by computeWeights
+    });
     sortOrder_.resize(p.size());
     std::iota(sortOrder_.begin(), sortOrder_.end(), std::size_t(0));
     // Stable: equal keys keep their order, so the result depends on the state only.
@@ -222,11 +246,10 @@ void MpmSolver::computeWeights()
     auto timer = timers_.time("shapeFunctions");
     const Particles& p = particles_;
     const auto n = static_cast<long>(p.size());
-    long first = n;  // the lowest-numbered particle outside the grid, for a stable message
-#pragma omp parallel for schedule(static) reduction(min : first) if (n >= minParallelWork())
-    for (long q = 0; q < n; ++q)
-        if (!grid_.contains(p.x[q]) || !std::isfinite(p.x[q].x()) || !std::isfinite(p.x[q].y()))
-            first = std::min(first, q);
+    // The lowest-numbered particle outside the grid, for a stable message.
+    const long first = parallelFirst(n, [&](long q) {
+        return !grid_.contains(p.x[q]) || !std::isfinite(p.x[q].x()) || !std::isfinite(p.x[q].y());
+    });
     if (first < n) {
         const auto q = static_cast<std::size_t>(first);
         std::ostringstream msg;
@@ -307,7 +330,7 @@ void MpmSolver::bodyVelocities(double t)
     }
 }
 
-void MpmSolver::setContact(std::unique_ptr<ContactPass> pass)
+void MpmSolver::useContact(std::unique_ptr<ContactPass> pass)
 {
     // Without a pass (one body, noSlip) no per-body array exists.
     if (!pass) return;
@@ -369,7 +392,7 @@ void MpmSolver::markDeformingMaterials()
     if (!any) materialDeforms_.assign(materials_.size(), 1);
 }
 
-void MpmSolver::setLoads(std::vector<std::unique_ptr<ParticleLoad>> loads,
+void MpmSolver::useLoads(std::vector<std::unique_ptr<ParticleLoad>> loads,
                          const std::vector<std::string>& bodyNames)
 {
     loads_ = std::move(loads);
@@ -566,12 +589,11 @@ void MpmSolver::updateStress(double dt)
     }
     auto timer = timers_.time("material");
     const auto nChunks = static_cast<long>(chunks_.size());
-#pragma omp parallel for schedule(dynamic, 1) if (static_cast<long>(p.size()) >= minParallelWork())
-    for (long c = 0; c < nChunks; ++c) {
+    parallelForDynamic(nChunks, nParticles >= minParallelWork(), [&](long c) {
         const ParticleBlock& chunk = chunks_[c];
         materials_[chunk.material]->updateStress(p, chunk, dt);
         for (std::size_t q = chunk.begin; q < chunk.end; ++q) p.work[q] += 0.5 * p.V[q] * contract(p.sigma[q], p.dEps[q]);
-    }
+    });
     if (hasRotation_) addRotationWork();
     hooks_.call(StepPoint::afterStressUpdate, *this);
 }
@@ -586,10 +608,8 @@ void MpmSolver::gridToParticles(double dt)
     const auto nParticles = static_cast<long>(p.size());
     const double flip = transfer_->flipShare(dt);
     const bool affine = p.carries(FieldGroup::affine);
-    long firstBad = nParticles, returned = 0;
-#pragma omp parallel for schedule(static) reduction(min : firstBad) reduction(+ : returned) if (nParticles >= minParallelWork())
-    for (long q = 0; q < nParticles; ++q) {
-        if (driverOf(q)) continue;  // moved below
+    const LoopReport report = parallelForChecked(nParticles, [&](long q) {
+        if (driverOf(q)) return LoopMark::none;  // moved below
         Vector2 vNew = Vector2::Zero(), a = Vector2::Zero(), vStar = Vector2::Zero();
         const std::size_t k0 = q * stride;
         // With a contact pass each body moves with its own corrected field (seed G.4 steps 3-4).
@@ -612,10 +632,12 @@ void MpmSolver::gridToParticles(double dt)
         // velocity beyond what its nodes carry (the FLIP null space, e.g. at a wall that stops
         // its nodes) then decays instead of persisting. PIC and APIC: share 0.
         else p.v[q] = flip * (p.v[q] + dt * a) + (1.0 - flip) * vNew;
-        if (!std::isfinite(p.v[q].x() + p.v[q].y())) firstBad = std::min(firstBad, q);
-        if (!grid_.contains(p.x[q]) && keepInsideWalls(static_cast<std::size_t>(q))) ++returned;
-    }
-    wallReturns_ += static_cast<std::size_t>(returned);
+        const bool failed = !std::isfinite(p.v[q].x() + p.v[q].y());
+        const bool returned = !grid_.contains(p.x[q]) && keepInsideWalls(static_cast<std::size_t>(q));
+        return failed ? LoopMark::failure : (returned ? LoopMark::noted : LoopMark::none);
+    });
+    wallReturns_ += static_cast<std::size_t>(report.notes);
+    const long firstBad = report.firstFailure;
     for (std::size_t q : rigidParticles_) {  // drivers cache their motion: serial
         const RigidBodyDriver* body = driverOf(q);
         p.x[q] = body->move(time_, dt, p.x[q]);
@@ -685,11 +707,7 @@ void MpmSolver::remapVelocity(double dt)
 
 double MpmSolver::maxParticleSpeed() const
 {
-    double vmax = 0;
-    const auto n = static_cast<long>(particles_.size());
-#pragma omp parallel for schedule(static) reduction(max : vmax) if (n >= minParallelWork())
-    for (long q = 0; q < n; ++q) vmax = std::max(vmax, particles_.v[q].norm());
-    return vmax;
+    return parallelMax(static_cast<long>(particles_.size()), [&](long q) { return particles_.v[q].norm(); });
 }
 
 double MpmSolver::criticalTimeStep() const
@@ -763,9 +781,7 @@ std::size_t MpmSolver::removeOutflow()
     Particles& p = particles_;
     const auto n = static_cast<long>(p.size());
     const auto leaves = [&](std::size_t q) { return !grid_.contains(p.x[q]) && !driverOf(q) && leftThroughOpening(p.x[q]); };
-    long leaving = 0;
-#pragma omp parallel for schedule(static) reduction(+ : leaving) if (n >= minParallelWork())
-    for (long q = 0; q < n; ++q) leaving += leaves(static_cast<std::size_t>(q));
+    const long leaving = parallelCount(n, [&](long q) { return leaves(static_cast<std::size_t>(q)); });
     if (leaving == 0) return 0;
     // Keep the others in their order (blocks stay contiguous); tell the loads.
     std::vector<std::size_t> kept, newIndex(p.size(), ParticleLoad::removedParticle);

@@ -161,9 +161,7 @@ void StageSequence::writeStageFile(const std::string& timeDir, const std::string
     fs::create_directories(fs::path(timeDir) / "uniform");
     const fs::path file = fs::path(timeDir) / "uniform/stage";
     std::ofstream os(file);
-    os << "FoamFile { version 2.0; format ascii; class dictionary; location \"" << timeName
-       << "/uniform\"; object stage; }\n"
-       << "index     " << index_ << ";\n"
+    os << fileHeader("stage", timeName + "/uniform") << "index     " << index_ << ";\n"
        << "stage     " << (done() ? std::string("none") : stages_[index_]->name()) << ";\n"
        << "begun     " << (begun_ ? "yes" : "no") << ";\n"
        << "startTime " << exactNumber(startTime_) << ";\n"

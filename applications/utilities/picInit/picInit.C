@@ -1,7 +1,7 @@
 // picInit: fills the bodies of constant/bodies with particles and writes time directory 0/
 // (and the ParaView index) for picSolver.
 #include "applicationMain.H"
-#include "bodies/CaseInitialiser.H"
+#include "case/CaseInitialiser.H"
 
 #include <iostream>
 

@@ -4,7 +4,7 @@
 #include "applicationMain.H"
 #include "io/PvdCollection.H"
 #include "io/TimeDirectories.H"
-#include "solver/CaseFiles.H"
+#include "case/CaseFiles.H"
 
 #include <filesystem>
 #include <iostream>

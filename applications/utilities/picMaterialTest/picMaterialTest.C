@@ -22,7 +22,7 @@
 #include "PointHistoryFile.H"
 #include "StepSolver.H"
 
-#include "solver/CaseFiles.H"
+#include "case/CaseFiles.H"
 
 #include <chrono>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "bodies/CaseInitialiser.H"
+#include "case/CaseInitialiser.H"
 
 #include "bodies/BodyFiller.H"
 #include "core/error.H"
@@ -6,7 +6,7 @@
 #include "io/ParticlesVtk.H"
 #include "io/PvdCollection.H"
 #include "io/TimeDirectories.H"
-#include "solver/CaseFiles.H"
+#include "case/CaseFiles.H"
 #include "solver/CosseratField.H"
 
 namespace gpic {

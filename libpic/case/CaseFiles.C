@@ -1,4 +1,4 @@
-#include "solver/CaseFiles.H"
+#include "case/CaseFiles.H"
 
 #include "core/error.H"
 

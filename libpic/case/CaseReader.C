@@ -1,0 +1,207 @@
+#include "case/CaseReader.H"
+
+#include "case/CaseFiles.H"
+#include "core/Info.H"
+#include "core/Plugins.H"
+#include "core/error.H"
+#include "io/ParticlesVtk.H"
+#include "io/TimeDirectories.H"
+
+#include <filesystem>
+#include <sstream>
+
+namespace gpic {
+
+namespace fs = std::filesystem;
+
+namespace {
+//- Map the material ids stored in a time directory onto the order of constant/materials.
+void remapMaterials(Particles& p, const std::vector<std::string>& stored,
+                    const std::vector<std::string>& current, const std::string& file)
+{
+    std::vector<int> map(stored.size(), -1);
+    for (std::size_t s = 0; s < stored.size(); ++s) {
+        for (std::size_t c = 0; c < current.size(); ++c)
+            if (stored[s] == current[c]) map[s] = static_cast<int>(c);
+        if (map[s] < 0) {
+            std::string valid;
+            for (const auto& c : current) valid += (valid.empty() ? "" : ", ") + c;
+            throw InputError(file, 0, "material '" + stored[s] +
+                                          "' of the particles is not in constant/materials; "
+                                          "valid choices: " + valid);
+        }
+    }
+    for (auto& m : p.material) {
+        if (m < 0 || m >= static_cast<int>(map.size()))
+            throw InputError(file, 0, "particle material id " + std::to_string(m) + " is unknown");
+        m = map[m];
+    }
+}
+
+//- The time directory the run starts from: -time, or controlDict's startFrom.
+std::string startTimeName(const std::string& dir, const RunOptions& options, const TimeControl& timeControl)
+{
+    if (options.startTime) return findTime(dir, *options.startTime);
+    if (timeControl.startFrom() == "latestTime") return latestTime(dir);
+    if (timeControl.startFrom() == "firstTime") {
+        const auto times = listTimeDirectories(dir);
+        return times.empty() ? latestTime(dir) /* throws: no time directory */ : times.front().second;
+    }
+    return findTime(dir, timeControl.startTime());
+}
+
+bool hasFile(const std::string& dir, const char* relativePath) { return fs::exists(fs::path(dir) / relativePath); }
+} // namespace
+
+void Case::warnUnused() const
+{
+    controlDict.warnUnused();
+    gridDict.warnUnused();
+    materialsDict.warnUnused();
+    schemes.warnUnused();
+}
+
+std::unique_ptr<Case> readCase(const RunOptions& options)
+{
+    auto run = std::make_unique<Case>();
+    Case& c = *run;
+    const std::string& dir = options.caseDir;
+    c.controlDict = readCaseFile(dir, "system/controlDict");
+    setQuiet(options.quiet);
+    c.name = caseName(dir);
+    Plugins::open(c.controlDict, "libs");
+    for (const auto& lib : options.libs) Plugins::open(lib);
+
+    Dictionary& controlDict = c.controlDict;
+    c.timeControl = std::make_unique<TimeControl>(controlDict);
+    if (controlDict.found("stages") && controlDict.found("damping"))
+        controlDict.fail("damping", "a run in stages sets the damping per stage: move `damping` into the stages");
+    const auto damping = controlDict.getOrDefault<double>("damping", 0.0);
+    if (damping < 0 || damping >= 1) controlDict.fail("damping", "damping must lie in [0, 1)");
+    c.writeGrid = controlDict.getOrDefault<bool>("writeGrid", false);
+    c.progressInterval = controlDict.getOrDefault<double>("progressInterval", 5.0);
+    const std::string startName = startTimeName(dir, options, *c.timeControl);
+
+    c.gridDict = readCaseFile(dir, "constant/grid");
+    SolverInputs in{Grid(c.gridDict)};
+    in.boundaries = readBoundaries(c.gridDict);
+    c.materialsDict = readCaseFile(dir, "constant/materials");
+    in.materials = readMaterials(c.materialsDict);
+    const std::vector<std::string> materials = materialNames(in.materials);
+
+    if (hasFile(dir, "system/mpmSchemes")) c.schemes = readCaseFile(dir, "system/mpmSchemes");
+    Dictionary& schemes = c.schemes;
+    // The defaults a new user gets run long granular flows to their end (doc/stability.md,
+    // "Transfers"): MUSL, and FLIP with PIC blended in over flipRelaxationTime 0.02 s.
+    c.schemeName = schemes.getOrDefault<std::string>("updateScheme", "MUSL");
+    c.shapeName = schemes.getOrDefault<std::string>("shapeFunction", "bilinear");
+    const std::string transferName = schemes.getOrDefault<std::string>("transfer", "FLIP");
+    // A keyword of another transfer is a mistake, not a default to ignore.
+    for (const char* k : {"flipFraction", "flipRelaxationTime"})
+        if (schemes.found(k) && transferName != "FLIP")
+            schemes.fail(k, std::string(k) + " belongs to transfer FLIP, not " + transferName);
+    if (schemes.found("xpicOrder") && transferName != "XPIC")
+        schemes.fail("xpicOrder", "xpicOrder belongs to transfer XPIC, not " + transferName);
+    // particle: each particle's own dilatation (the seed); cellMean: CellMeanDilatation.H
+    in.cellMeanDilatation = schemes.getWordOrDefault("volumetricStrain", {"particle", "cellMean"}, "particle") == "cellMean";
+    c.sortInterval = schemes.getOrDefault<long>("sortInterval", 100);
+    if (c.sortInterval < 0) schemes.fail("sortInterval", "sortInterval must be >= 0 (0: never sort)");
+    c.scheme = Registry<UpdateScheme>::select(c.schemeName, schemes, schemes, "updateScheme");
+    in.shape = Registry<ShapeFunction>::select(c.shapeName, schemes, schemes, "shapeFunction");
+    in.transfer = Registry<ParticleTransfer>::select(transferName, schemes, schemes, "transfer");
+
+    std::vector<std::string> storedMaterials, bodyNames;
+    readParticles((fs::path(dir) / startName / "particles.vtp").string(), in.particles, c.time, &storedMaterials,
+                  &bodyNames);
+    remapMaterials(in.particles, storedMaterials, materials, startName + "/particles.vtp");
+    if (const auto stored = readStoredTime(dir, startName)) {
+        c.time = stored->value;
+        c.step = stored->index;
+        in.removedMass = stored->removedMass;
+    }
+    in.time = c.time;
+
+    // The particles a stage holds back (a restart inside a fill) belong to the scene as well.
+    Particles dormant;
+    const fs::path dormantFile = fs::path(dir) / startName / "dormant.vtp";
+    const Dictionary* stagesDict = controlDict.subDictPtr("stages");
+    if (stagesDict && fs::exists(dormantFile)) {
+        double t = 0;
+        std::vector<std::string> stored;
+        readParticles(dormantFile.string(), dormant, t, &stored);
+        remapMaterials(dormant, stored, materials, startName + "/dormant.vtp");
+    }
+    in.carryRotation = MpmSolver::needsRotation(dormant, in.materials);
+    const bool polar = in.carryRotation || MpmSolver::needsRotation(in.particles, in.materials);
+
+    c.gravity = readGravity(dir);
+    in.gravity = c.gravity;
+    in.damping = damping;
+    if (polar) in.rotationSides = readRotationSides(c.gridDict, mirrorSides(in.boundaries));
+    std::optional<Dictionary> rigidBodiesDict;  // kept for the stages' drivers
+    if (hasFile(dir, "constant/rigidBodies")) {
+        rigidBodiesDict = readCaseFile(dir, "constant/rigidBodies");
+        if (polar) in.rigidRotation = readRigidRotation(*rigidBodiesDict, bodyNames);
+        in.rigidBodies = readRigidBodies(*rigidBodiesDict, bodyNames);
+    }
+    c.hasLoads = hasFile(dir, "constant/loads");
+    if (c.hasLoads) in.loads = readLoads(readCaseFile(dir, "constant/loads"));
+    in.bodyNames = bodyNames;
+    if (hasFile(dir, "constant/contactProperties")) {
+        const Dictionary contactDict = readCaseFile(dir, "constant/contactProperties");
+        ContactScene scene{dir, bodyNames, {}};
+        for (int b = 0; b < scene.nBodies(); ++b)
+            scene.rigid.push_back(static_cast<std::size_t>(b) < in.rigidBodies.size() && in.rigidBodies[b]);
+        in.contact = ContactPass::New(contactDict, scene, in.grid);
+        contactDict.warnUnused();
+    }
+    c.solver = std::make_unique<MpmSolver>(std::move(in));
+    MpmSolver& solver = *c.solver;
+
+    if (stagesDict) {
+        StageSetup setup;
+        setup.bodyNames = bodyNames;
+        setup.gravity = c.gravity;
+        setup.rigidBodies = rigidBodiesDict ? &*rigidBodiesDict : nullptr;
+        for (int side = 0; side < 4; ++side)
+            setup.sideHasOpening[side] = solver.boundary(static_cast<GridSide>(side)).hasOpening();
+        setup.cellHeight = solver.grid().cellSize().y();
+        setup.gridMin = solver.grid().origin();
+        setup.gridMax = solver.grid().upper();
+        c.stages = std::make_unique<StageSequence>(*stagesDict, std::move(setup), dir);
+        if (c.hasLoads && c.stages->changesParticles())
+            controlDict.fail("stages", "the loads of constant/loads hold particle indices: with loads no stage may "
+                                       "wake, put to sleep, fill or dig particles (give every stage all bodies)");
+        const fs::path stageFile = fs::path(dir) / startName / "uniform/stage";
+        if (fs::exists(stageFile)) {
+            const Dictionary f = Dictionary::readFile(stageFile.string(), startName + "/uniform/stage");
+            c.stages->restore(&f, std::move(dormant));
+        } else {
+            c.stages->restore(nullptr, std::move(dormant));
+        }
+    }
+
+    c.context = RunContext{dir, startName, bodyNames, materials};
+    if (const Dictionary* fns = controlDict.subDictPtr("functions"))
+        for (const auto& key : fns->keys()) {
+            c.functions.push_back(FunctionObject::New(fns->subDict(key), c.context));
+            FunctionObject* f = c.functions.back().get();
+            for (const StepPoint point : f->stepPoints())
+                solver.addHook(point, [f, point](const MpmSolver& s) { f->at(point, s); });
+        }
+    // Their running state where picSolver wrote the start directory (not picInit's 0/).
+    const fs::path functionState = fs::path(dir) / startName / "uniform/functionObjects";
+    if (!c.functions.empty() && fs::exists(functionState)) {
+        const Dictionary state = Dictionary::readFile(functionState.string(), startName + "/uniform/functionObjects");
+        for (auto& f : c.functions)
+            if (state.isDict(f->name())) f->restore(state.subDict(f->name()));
+    }
+
+    std::ostringstream why;
+    why << "cell size " << solver.grid().minCellSize() << " m / (wave speed " << solver.maxWaveSpeed()
+        << " m/s + particle speed " << solver.maxParticleSpeed() << " m/s)";
+    c.timeControl->checkStable(solver.criticalTimeStep(), why.str());
+    return run;
+}
+
+} // namespace gpic
