@@ -8,6 +8,7 @@
 
 #include <omp.h>
 
+#include <algorithm>
 #include <cstring>
 
 using namespace gpic;
@@ -116,4 +117,33 @@ TEST(ThreadDeterminism, frictionalContactOfTwoDisks)
     setEntry(dir / "system/controlDict", "endTime", "1.6");  // past the impact at 1.3 s
     setEntry(dir / "system/controlDict", "writeInterval", "100");
     expectSameAtOneAndTwoThreads(dir);
+}
+
+TEST(ThreadDeterminism, reductionsNameTheSameParticleAtAnyThreadCount)
+{
+    // 10 000 "particles": failures at 7 321 and 9 000 (and at 123 for the first-of test),
+    // a note at every multiple of 97 not failed, the largest value at 4 242.
+    const long n = 10000;
+    const auto failed = [](long i) { return i == 7321 || i == 9000; };
+    const auto value = [](long i) { return i == 4242 ? 5.0 : double(i % 13) / 13.0; };
+    const long savedWork = minParallelWork();
+    const int saved = omp_get_max_threads();
+    minParallelWork() = 0;
+    for (int threads : {1, 2}) {
+        omp_set_num_threads(threads);
+        const LoopReport report = parallelForChecked(n, [&](long i) {
+            return failed(i) ? LoopMark::failure : (i % 97 == 0 ? LoopMark::noted : LoopMark::none);
+        });
+        EXPECT_EQ(report.firstFailure, 7321) << threads << " threads";
+        EXPECT_EQ(report.notes, (n - 1) / 97 + 1) << threads << " threads";  // 7321 and 9000 are not multiples of 97
+        EXPECT_EQ(parallelFirst(n, [&](long i) { return failed(i) || i == 123; }), 123) << threads << " threads";
+        EXPECT_EQ(parallelFirst(n, [](long) { return false; }), n) << threads << " threads: none found";
+        EXPECT_EQ(parallelCount(n, failed), 2) << threads << " threads";
+        EXPECT_EQ(parallelMax(n, value), 5.0) << threads << " threads";
+        std::vector<int> visited(static_cast<std::size_t>(n), 0);
+        parallelForDynamic(n, true, [&](long i) { ++visited[static_cast<std::size_t>(i)]; });
+        EXPECT_EQ(std::count(visited.begin(), visited.end(), 1), n) << threads << " threads: each piece once";
+    }
+    omp_set_num_threads(saved);
+    minParallelWork() = savedWork;
 }
