@@ -144,8 +144,7 @@ MpmSolver::MpmSolver(SolverInputs in)
       transfer_(std::make_unique<FlipTransfer>(Dictionary::parse("transfer FLIP;", "the seed's FLIP")))
 {
     refreshOpenings();  // the constrained side nodes
-    hasRotation_ = needsRotation(particles_, materials_);
-    setupRotation();  // polar scenes only
+    if (needsRotation(particles_, materials_)) addRotation();  // polar scenes only
     setUpParticles();
     if (in.carryRotation) enableRotation();
     // The order matters: the rigid bodies' mass properties take gravity, the contact pass's
@@ -156,8 +155,8 @@ MpmSolver::MpmSolver(SolverInputs in)
     if (in.cellMeanDilatation) cellMean_ = std::make_unique<CellMeanDilatation>();
     time_ = in.time;
     removedMass_ = in.removedMass;
-    if (hasRotation_ && in.rotationSides) rotation_.sideFixed = *in.rotationSides;
-    if (hasRotation_ && !in.rigidRotation.empty()) rotation_.rigidFixed = std::move(in.rigidRotation);
+    if (rotation_ && in.rotationSides) rotation_->setSideFixed(*in.rotationSides);
+    if (rotation_ && !in.rigidRotation.empty()) rotation_->setRigidFixed(std::move(in.rigidRotation));
     if (!in.rigidBodies.empty()) setRigidBodies(std::move(in.rigidBodies));
     if (!in.loads.empty()) useLoads(std::move(in.loads), in.bodyNames);
     useContact(std::move(in.contact));
@@ -165,10 +164,51 @@ MpmSolver::MpmSolver(SolverInputs in)
 
 void MpmSolver::enableRotation()
 {
-    if (hasRotation_) return;
-    hasRotation_ = true;
-    setupRotation();
-    setupRotationParticles();
+    if (rotation_) return;
+    addRotation();
+    rotation_->setUpParticles(particles_);
+}
+
+void MpmSolver::addRotation()
+{
+    auto pass = std::make_unique<CosseratRotation>(materials_, boundaries_, grid_.nNodes());
+    rotation_ = pass.get();
+    addPass(std::move(pass));
+}
+
+void MpmSolver::addPass(std::unique_ptr<EnginePass> pass)
+{
+    for (const StepPoint point : pass->points()) passAt_[static_cast<std::size_t>(point)].push_back(pass.get());
+    passes_.push_back(std::move(pass));
+}
+
+void MpmSolver::reach(StepPoint point, double dt)
+{
+    const auto& passes = passAt_[static_cast<std::size_t>(point)];
+    if (!passes.empty()) {
+        EngineView engine{grid_,    particles_,   weights_,
+                          strips_,  sideNodes_,   rigid_,
+                          drivesRigidNodes() ? &rigidNodes_ : nullptr,
+                          contact_.get(), *transfer_, damping_, timers_};
+        for (EnginePass* pass : passes) pass->at(point, engine, dt);
+    }
+    hooks_.call(point, *this);
+}
+
+void MpmSolver::setRigidRotation(std::vector<char> fixed)
+{
+    if (rotation_) rotation_->setRigidFixed(std::move(fixed));
+}
+
+const CosseratField& MpmSolver::rotationField() const
+{
+    static const CosseratField none;
+    return rotation_ ? rotation_->field() : none;
+}
+
+double MpmSolver::rotationalTimeStep() const
+{
+    return rotation_ ? rotation_->timeStep(materials_, materialDeforms_, grid_.minCellSize()) : 1e300;
 }
 
 void MpmSolver::setUpParticles()
@@ -193,7 +233,9 @@ void MpmSolver::setUpParticles()
     double lightest = 0;
     for (double m : particles_.m) lightest = lightest == 0 ? m : std::min(lightest, m);
     minNodalMass_ = 1e-9 * lightest;
-    setupRotationParticles();  // a nonpolar scene drops any rotation arrays read
+    // A nonpolar scene drops any rotation arrays read.
+    if (rotation_) rotation_->setUpParticles(particles_);
+    else particles_.drop(FieldGroup::polar);
 }
 
 void MpmSolver::applyBoundaries(std::vector<Vector2>& field) const
@@ -309,8 +351,7 @@ void MpmSolver::particlesToGrid()
     if (driven) rigidNodes_.constrain(grid_, rigid_, time_);
     applyBoundaries(grid_.velocity);
     if (contact_) bodyVelocities(time_);
-    if (hasRotation_) rotationToGrid();
-    hooks_.call(StepPoint::afterParticlesToGrid, *this);
+    reach(StepPoint::afterParticlesToGrid, 0.0);
 }
 
 void MpmSolver::bodyVelocities(double t)
@@ -435,15 +476,15 @@ void MpmSolver::computeForces()
             if (body) body->force[n] += fInt + fExt;
         }
     });
-    if (hasRotation_) rotationForces();
+    reach(StepPoint::afterForces, 0.0);
 }
 
 void MpmSolver::updateGrid(double dt)
 {
-    if (hasRotation_) updateRotation(dt);
+    reach(StepPoint::beforeGridUpdate, dt);
     if (contact_) updateBodyFields(dt);
     else updateSingleField(dt);
-    hooks_.call(StepPoint::afterGridUpdate, *this);
+    reach(StepPoint::afterGridUpdate, dt);
 }
 
 void MpmSolver::updateSingleField(double dt)
@@ -583,10 +624,7 @@ void MpmSolver::updateStress(double dt)
             });
         }
     }
-    if (hasRotation_) {
-        rotationStrain(dt);
-        addRotationWork();
-    }
+    reach(StepPoint::afterStrain, dt);
     auto timer = timers_.time("material");
     const auto nChunks = static_cast<long>(chunks_.size());
     parallelForDynamic(nChunks, nParticles >= minParallelWork(), [&](long c) {
@@ -594,8 +632,7 @@ void MpmSolver::updateStress(double dt)
         materials_[chunk.material]->updateStress(p, chunk, dt);
         for (std::size_t q = chunk.begin; q < chunk.end; ++q) p.work[q] += 0.5 * p.V[q] * contract(p.sigma[q], p.dEps[q]);
     });
-    if (hasRotation_) addRotationWork();
-    hooks_.call(StepPoint::afterStressUpdate, *this);
+    reach(StepPoint::afterStressUpdate, dt);
 }
 
 void MpmSolver::gridToParticles(double dt)
@@ -648,8 +685,7 @@ void MpmSolver::gridToParticles(double dt)
         throw RunError("particle " + std::to_string(p.id[q]) + " (material " + materials_[p.material[q]]->name() +
                        ") has a non-finite velocity: the step is unstable");
     }
-    if (hasRotation_) rotationToParticles(dt);
-    hooks_.call(StepPoint::afterGridToParticles, *this);
+    reach(StepPoint::afterGridToParticles, dt);
 }
 
 void MpmSolver::advanceRigidBodies(double dt)
@@ -702,7 +738,7 @@ void MpmSolver::remapVelocity(double dt)
             formAffine(static_cast<std::size_t>(q), velocity, p.x[q] - dt * p.v[q]);
         });
     }
-    if (hasRotation_) remapRotation();
+    reach(StepPoint::afterRemap, dt);
 }
 
 double MpmSolver::maxParticleSpeed() const
@@ -713,7 +749,7 @@ double MpmSolver::maxParticleSpeed() const
 double MpmSolver::criticalTimeStep() const
 {
     const double dt = grid_.minCellSize() / (maxWaveSpeed() + maxParticleSpeed());
-    return hasRotation_ ? std::min(dt, rotationalTimeStep()) : dt;
+    return rotation_ ? std::min(dt, rotationalTimeStep()) : dt;
 }
 
 double MpmSolver::maxWaveSpeed() const
