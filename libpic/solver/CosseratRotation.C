@@ -77,15 +77,11 @@ void CosseratRotation::constrain(const Grid& grid, std::vector<double>& field) c
         if (r_.fixed[n]) field[n] = 0.0;
 }
 
-void CosseratRotation::toGrid(EngineView& e)
+void CosseratRotation::spinToGrid(EngineView& e, bool withInertia)
 {
     CosseratField& r = r_;
     const Particles& p = e.particles;
     const ShapeWeights& weights = e.weights;
-    e.grid.forEachActiveNode([&](int n) {
-        r.inertia[n] = r.momentum[n] = r.moment[n] = r.accel[n] = 0.0;
-        r.fixed[n] = 0;
-    });
     const int stride = weights.stride;
     e.strips.forEach([&](std::size_t q) {
         if (!isPolar(e, q)) return;
@@ -95,10 +91,20 @@ void CosseratRotation::toGrid(EngineView& e)
             const int n = weights.node[k0 + a];
             if (n < 0) continue;
             const double NmJ = weights.N[k0 + a] * mJ;
-            r.inertia[n] += NmJ;                      // lumped rotational inertia
+            if (withInertia) r.inertia[n] += NmJ;  // lumped rotational inertia
             r.momentum[n] += NmJ * p.polar.omega[q];  // spin momentum, as eq. 2.4.1
         }
     });
+}
+
+void CosseratRotation::toGrid(EngineView& e)
+{
+    CosseratField& r = r_;
+    e.grid.forEachActiveNode([&](int n) {
+        r.inertia[n] = r.momentum[n] = r.moment[n] = r.accel[n] = 0.0;
+        r.fixed[n] = 0;
+    });
+    spinToGrid(e, true);
     e.grid.forEachActiveNode([&](int n) { r.rate[n] = r.inertia[n] > 0.0 ? r.momentum[n] / r.inertia[n] : 0.0; });
     // Conditions: sides with `rotation fixed`, and the nodes a rigid body drives.
     for (int s = 0; s < 4; ++s)
@@ -230,19 +236,8 @@ void CosseratRotation::toParticles(EngineView& e, double dt)
 void CosseratRotation::remap(EngineView& e)
 {
     CosseratField& r = r_;
-    const Particles& p = e.particles;
-    const ShapeWeights& weights = e.weights;
     e.grid.forEachActiveNode([&](int n) { r.momentum[n] = 0.0; });
-    const int stride = weights.stride;
-    e.strips.forEach([&](std::size_t q) {
-        if (!isPolar(e, q)) return;
-        const double mJ = p.m[q] * r.materialJ[static_cast<std::size_t>(p.material[q])];
-        const std::size_t k0 = q * stride;
-        for (int a = 0; a < stride; ++a) {
-            const int n = weights.node[k0 + a];
-            if (n >= 0) r.momentum[n] += weights.N[k0 + a] * mJ * p.polar.omega[q];
-        }
-    });
+    spinToGrid(e, false);  // the step's inertia stays
     e.grid.forEachActiveNode(
         [&](int n) { r.rate[n] = r.inertia[n] > 0.0 && !r.fixed[n] ? r.momentum[n] / r.inertia[n] : 0.0; });
 }
