@@ -8,7 +8,7 @@
 namespace gpic {
 
 CosseratRotation::CosseratRotation(const std::vector<std::unique_ptr<Material>>& materials,
-                                   const std::array<std::unique_ptr<BoundaryCondition>, 4>& boundaries, int nNodes)
+                                   const GridSides& sides, int nNodes)
 {
     r_.materialPolar.assign(materials.size(), 0);
     r_.materialJ.assign(materials.size(), 0.0);
@@ -16,8 +16,8 @@ CosseratRotation::CosseratRotation(const std::vector<std::unique_ptr<Material>>&
         r_.materialPolar[m] = materials[m]->needsRotation();
         r_.materialJ[m] = r_.materialPolar[m] ? materials[m]->rotationalInertia() : 0.0;
     }
-    for (int s = 0; s < 4; ++s)  // w3c is odd under a reflection: zero on a symmetry plane
-        r_.sideFixed[s] = boundaries[s]->isMirror();
+    for (int s = 0; s < GridSides::count; ++s)  // w3c is odd under a reflection: zero on a symmetry plane
+        r_.sideFixed[s] = sides.condition(static_cast<GridSide>(s)).isMirror();
     r_.allocate(nNodes);
 }
 
@@ -107,19 +107,13 @@ void CosseratRotation::toGrid(EngineView& e)
     spinToGrid(e, true);
     e.grid.forEachActiveNode([&](int n) { r.rate[n] = r.inertia[n] > 0.0 ? r.momentum[n] / r.inertia[n] : 0.0; });
     // Conditions: sides with `rotation fixed`, and the nodes a rigid body drives.
-    for (int s = 0; s < 4; ++s)
+    for (int s = 0; s < GridSides::count; ++s)
         if (r.sideFixed[s])
-            for (int n : e.sideNodes[s]) r.fixed[n] = 1;
+            for (int n : e.sides.constrainedNodes(static_cast<GridSide>(s))) r.fixed[n] = 1;
     const auto rigidFixed = [&](int b) { return r.rigidFixed.empty() || r.rigidFixed[static_cast<std::size_t>(b)]; };
-    if (e.rigidNodes) {
-        for (int n : e.grid.active)
-            if (e.rigidNodes->bodyAt(n) >= 0 && rigidFixed(e.rigidNodes->bodyAt(n))) r.fixed[n] = 1;
-    } else if (e.contact && !e.rigid.empty()) {
-        for (int b = 0; b < e.contact->nBodies(); ++b)
-            if (e.rigid[b] && rigidFixed(b))
-                for (int n : e.grid.active)
-                    if (e.contact->field(b).mass[n] > 0.0) r.fixed[n] = 1;
-    }
+    e.coupling.forEachRigidNode(e.grid, e.rigid, [&](int n, int b) {
+        if (rigidFixed(b)) r.fixed[n] = 1;
+    });
     constrain(e.grid, r.rate);
 }
 
@@ -135,7 +129,7 @@ void CosseratRotation::forces(EngineView& e)
         const double skew = p.sigma[q][XY] - p.polar.sigma21[q];  // sigma12 - sigma21
         const Vector2& mu = p.polar.mu[q];
         const std::size_t k0 = q * stride;
-        BodyField* body = e.contact ? &e.contact->field(p.body[q]) : nullptr;
+        BodyField* body = e.coupling.bodyField(p.body[q]);
         for (int a = 0; a < stride; ++a) {
             const int n = weights.node[k0 + a];
             if (n < 0) continue;

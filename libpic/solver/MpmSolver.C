@@ -27,8 +27,11 @@ void MpmSolver::useTransfer(std::unique_ptr<ParticleTransfer> transfer)
     affineCentre_.clear();
     if (transfer_->affine())
         for (int n = 0; n < grid_.nNodes(); ++n) affineCentre_.push_back(shape_->affineCentre(grid_, n));
-    filtered_.clear();
-    filterScratch_.clear();
+    if (transfer_->filterOrder() >= 1) {
+        auto filter = std::make_unique<XpicFilter>(transfer_->filterOrder());
+        filter_ = filter.get();
+        addPass(std::move(filter));
+    }
 }
 
 void MpmSolver::matchAffine()
@@ -59,77 +62,6 @@ void MpmSolver::formAffine(std::size_t q, const std::vector<Vector2>& velocity, 
     p.affineEnergy[q] = 0.5 * p.m[q] * (C * D * C.transpose()).trace();
 }
 
-void MpmSolver::filterVelocity(double dt, int order)
-{
-    auto timer = timers_.time("transferFilter");
-    const int nFields = contact_ ? contact_->nBodies() : 1;
-    const auto nodes = static_cast<std::size_t>(grid_.nNodes());
-    filtered_.resize(static_cast<std::size_t>(nFields));
-    filterScratch_.resize(2 * static_cast<std::size_t>(nFields));
-    const auto isRigidField = [&](int f) { return contact_ && !rigid_.empty() && rigid_[f]; };
-    const auto massOf = [&](int f) -> const std::vector<double>& { return contact_ ? contact_->field(f).mass : grid_.mass; };
-    for (int f = 0; f < nFields; ++f) {
-        filtered_[f].resize(nodes);
-        filterScratch_[2 * f].resize(nodes);
-        filterScratch_[2 * f + 1].resize(nodes);
-        if (isRigidField(f)) continue;  // a rigid body's particles follow their driver
-        const std::vector<Vector2>& v = contact_ ? contact_->field(f).velocity : grid_.velocity;
-        const std::vector<Vector2>& a = contact_ ? contact_->field(f).accel : grid_.accel;
-        std::vector<Vector2>& w = filterScratch_[2 * f];
-        grid_.forEachActiveNode([&](int n) {
-            w[n] = v[n] - dt * a[n];  // v^t with its conditions: the velocity the update started from
-            filtered_[f][n] = double(order) * w[n];
-        });
-    }
-    const Particles& p = particles_;
-    const int stride = weights_.stride;
-    double binomial = order;  // C(m, k-1)
-    for (int k = 2; k <= order; ++k) {
-        binomial *= double(order - k + 1) / double(k);  // C(m, k)
-        const double coefficient = (k % 2 == 0 ? -1.0 : 1.0) * binomial;
-        for (int f = 0; f < nFields; ++f) {
-            std::vector<Vector2>& next = filterScratch_[2 * f + 1];
-            grid_.forEachActiveNode([&](int n) { next[n].setZero(); });
-        }
-        // One projection grid -> particles -> grid per field: S^T M_p S w, then / m_i.
-        strips_.forEach([&](std::size_t q) {
-            const int f = contact_ ? p.body[q] : 0;
-            if (isRigidField(f)) return;
-            const std::vector<Vector2>& w = filterScratch_[2 * f];
-            std::vector<Vector2>& next = filterScratch_[2 * f + 1];
-            const std::size_t k0 = q * stride;
-            Vector2 vq = Vector2::Zero();
-            for (int c = 0; c < stride; ++c) {
-                const int n = weights_.node[k0 + c];
-                if (n >= 0) vq += weights_.N[k0 + c] * w[n];
-            }
-            for (int c = 0; c < stride; ++c) {
-                const int n = weights_.node[k0 + c];
-                if (n >= 0) next[n] += (weights_.N[k0 + c] * p.m[q]) * vq;
-            }
-        });
-        for (int f = 0; f < nFields; ++f) {
-            if (isRigidField(f)) continue;
-            const std::vector<double>& mass = massOf(f);
-            const std::vector<Vector2>& v = contact_ ? contact_->field(f).velocity : grid_.velocity;
-            const std::vector<Vector2>& a = contact_ ? contact_->field(f).accel : grid_.accel;
-            std::vector<Vector2>& next = filterScratch_[2 * f + 1];
-            grid_.forEachActiveNode([&](int n) {
-                next[n] = mass[n] > 0.0 ? Vector2(next[n] / mass[n]) : Vector2::Zero();
-            });
-            applyBoundaries(next);
-            // A node a rigid tool drives keeps the velocity the update started from.
-            if (drivesRigidNodes())
-                for (int n : grid_.active)
-                    if (rigidNodes_.bodyAt(n) >= 0) next[n] = v[n] - dt * a[n];
-            grid_.forEachActiveNode([&](int n) {
-                filtered_[f][n] += coefficient * next[n];
-            });
-            filterScratch_[2 * f].swap(next);
-        }
-    }
-}
-
 bool MpmSolver::needsRotation(const Particles& particles, const std::vector<std::unique_ptr<Material>>& materials)
 {
     // A polar material that constant/materials lists but no body uses costs nothing.
@@ -140,10 +72,9 @@ bool MpmSolver::needsRotation(const Particles& particles, const std::vector<std:
 
 MpmSolver::MpmSolver(SolverInputs in)
     : grid_(std::move(in.grid)), particles_(std::move(in.particles)), materials_(std::move(in.materials)),
-      shape_(std::move(in.shape)), boundaries_(std::move(in.boundaries)), strips_(grid_),
+      shape_(std::move(in.shape)), sides_(std::move(in.boundaries), grid_), strips_(grid_),
       transfer_(std::make_unique<FlipTransfer>(Dictionary::parse("transfer FLIP;", "the seed's FLIP")))
 {
-    refreshOpenings();  // the constrained side nodes
     if (needsRotation(particles_, materials_)) addRotation();  // polar scenes only
     setUpParticles();
     if (in.carryRotation) enableRotation();
@@ -157,9 +88,29 @@ MpmSolver::MpmSolver(SolverInputs in)
     removedMass_ = in.removedMass;
     if (rotation_ && in.rotationSides) rotation_->setSideFixed(*in.rotationSides);
     if (rotation_ && !in.rigidRotation.empty()) rotation_->setRigidFixed(std::move(in.rigidRotation));
-    if (!in.rigidBodies.empty()) setRigidBodies(std::move(in.rigidBodies));
-    if (!in.loads.empty()) useLoads(std::move(in.loads), in.bodyNames);
-    useContact(std::move(in.contact));
+    if (!in.rigidBodies.empty()) attachRigidBodies(std::move(in.rigidBodies));
+    coupleGrid(std::move(in.contact));
+    if (!in.loads.empty()) {  // after the particles took their final order
+        auto loads = std::make_unique<AppliedLoads>(std::move(in.loads), particles_, grid_, in.bodyNames);
+        loads_ = loads.get();
+        addPass(std::move(loads));
+    }
+}
+
+void MpmSolver::coupleGrid(std::unique_ptr<ContactPass> contact)
+{
+    CouplingParts parts;
+    parts.grid = &grid_;
+    parts.contact = std::move(contact);
+    parts.rigid = &rigid_;
+    coupling_ = GridCoupling::New(parts);
+    coupling_->attach(grid_, rigid_);
+}
+
+EngineView MpmSolver::view()
+{
+    return EngineView{grid_,    particles_, weights_, strips_,       sides_,        rigid_,  *coupling_, *transfer_,
+                      gravity_, time_,      damping_, minNodalMass_, affineCentre_, timers_};
 }
 
 void MpmSolver::enableRotation()
@@ -171,7 +122,7 @@ void MpmSolver::enableRotation()
 
 void MpmSolver::addRotation()
 {
-    auto pass = std::make_unique<CosseratRotation>(materials_, boundaries_, grid_.nNodes());
+    auto pass = std::make_unique<CosseratRotation>(materials_, sides_, grid_.nNodes());
     rotation_ = pass.get();
     addPass(std::move(pass));
 }
@@ -182,14 +133,21 @@ void MpmSolver::addPass(std::unique_ptr<EnginePass> pass)
     passes_.push_back(std::move(pass));
 }
 
+bool MpmSolver::passesHoldIndices() const
+{
+    return std::any_of(passes_.begin(), passes_.end(), [](const auto& pass) { return pass->holdsParticleIndices(); });
+}
+
+void MpmSolver::renumberPasses(const std::vector<std::size_t>& newIndex)
+{
+    for (auto& pass : passes_) pass->renumber(newIndex, particles_.size());
+}
+
 void MpmSolver::reach(StepPoint point, double dt)
 {
     const auto& passes = passAt_[static_cast<std::size_t>(point)];
     if (!passes.empty()) {
-        EngineView engine{grid_,    particles_,   weights_,
-                          strips_,  sideNodes_,   rigid_,
-                          drivesRigidNodes() ? &rigidNodes_ : nullptr,
-                          contact_.get(), *transfer_, damping_, timers_};
+        EngineView engine = view();
         for (EnginePass* pass : passes) pass->at(point, engine, dt);
     }
     hooks_.call(point, *this);
@@ -238,11 +196,6 @@ void MpmSolver::setUpParticles()
     else particles_.drop(FieldGroup::polar);
 }
 
-void MpmSolver::applyBoundaries(std::vector<Vector2>& field) const
-{
-    for (int s = 0; s < 4; ++s) boundaries_[s]->constrain(field, sideNodes_[s]);
-}
-
 void MpmSolver::reindex()
 {
     blocks_ = particles_.blocks();
@@ -275,10 +228,10 @@ void MpmSolver::sortParticles()
                      [&](std::size_t a, std::size_t b) { return sortKey_[a] < sortKey_[b]; });
     if (std::is_sorted(sortOrder_.begin(), sortOrder_.end())) return;
     p.reorder(sortOrder_);
-    if (!particleForce_.empty()) {
+    if (passesHoldIndices()) {
         std::vector<std::size_t> newIndex(p.size());
         for (std::size_t k = 0; k < sortOrder_.size(); ++k) newIndex[sortOrder_[k]] = k;
-        for (auto& load : loads_) load->renumber(newIndex);
+        renumberPasses(newIndex);
     }
     reindex();
 }
@@ -309,90 +262,22 @@ void MpmSolver::computeWeights()
 void MpmSolver::particlesToGrid()
 {
     auto timer = timers_.time("particlesToGrid");
-    const bool driven = drivesRigidNodes();
-    if (driven) rigidNodes_.reset(grid_.active);
-    if (contact_) contact_->reset(grid_.active);
-    grid_.resetFields();
-    const Particles& p = particles_;
-    const int stride = weights_.stride;
-    strips_.forEach([&](std::size_t q) {
-        const std::size_t k0 = q * stride;
-        BodyField* body = contact_ ? &contact_->field(p.body[q]) : nullptr;
-        for (int a = 0; a < stride; ++a) {
-            const int n = weights_.node[k0 + a];
-            const double N = weights_.N[k0 + a];
-            if (n < 0) continue;
-            grid_.markActive(n);  // also at N = 0: its gradient may still carry force
-            const Vector2 v = carriedVelocity(q, n, p.x[q]);  // APIC: v_p + C_p (x_i - x_p)
-            if (body) {  // the body's own field, from its particles only (seed G.4 step 1)
-                body->mass[n] += N * p.m[q];
-                body->momentum[n] += (N * p.m[q]) * v;
-                continue;
-            }
-            if (driven && rigid_[p.body[q]]) rigidNodes_.add(n, p.body[q], N, N * p.m[q], v);
-            grid_.mass[n] += N * p.m[q];             // lumped mass, row sums of eq. 2.3.7
-            grid_.momentum[n] += (N * p.m[q]) * v;  // eq. 2.4.1
-        }
-    });
-    grid_.collectActive();
-    if (contact_)  // the system (centre-of-mass) field is the sum of the bodies' (F.8.6)
-        grid_.forEachActiveNode([&](int n) {
-            for (int b = 0; b < contact_->nBodies(); ++b) {
-                const BodyField& f = contact_->field(b);
-                grid_.mass[n] += f.mass[n];
-                grid_.momentum[n] += f.momentum[n];
-            }
-        });
-    // No small-mass cut-off: p_i/m_i is a weighted mean of particle velocities, exact for
-    // any m_i > 0; zeroing light nodes would put spurious strain into a rigid translation.
-    grid_.forEachActiveNode([&](int n) {
-        grid_.velocity[n] = grid_.mass[n] > 0.0 ? Vector2(grid_.momentum[n] / grid_.mass[n]) : Vector2::Zero();
-    });
-    if (driven) rigidNodes_.constrain(grid_, rigid_, time_);
-    applyBoundaries(grid_.velocity);
-    if (contact_) bodyVelocities(time_);
+    EngineView engine = view();
+    coupling_->particlesToGrid(engine, time_);
     reach(StepPoint::afterParticlesToGrid, 0.0);
-}
-
-void MpmSolver::bodyVelocities(double t)
-{
-    for (int b = 0; b < contact_->nBodies(); ++b) {
-        BodyField& f = contact_->field(b);
-        const RigidBodyDriver* driver = rigid_.empty() ? nullptr : rigid_[b].get();
-        if (driver) {  // drivers cache their motion: serial
-            for (int n : grid_.active)
-                if (f.mass[n] > 0.0) f.velocity[n] = driver->velocity(t, grid_.nodePosition(n));
-            continue;
-        }
-        grid_.forEachActiveNode([&](int n) {
-            if (f.mass[n] > 0.0) f.velocity[n] = f.momentum[n] / f.mass[n];
-        });
-        applyBoundaries(f.velocity);
-    }
-}
-
-void MpmSolver::useContact(std::unique_ptr<ContactPass> pass)
-{
-    // Without a pass (one body, noSlip) no per-body array exists.
-    if (!pass) return;
-    contact_ = std::move(pass);
-    allocateExchange();
-}
-
-void MpmSolver::allocateExchange()
-{
-    const auto nodes = static_cast<std::size_t>(grid_.nNodes());
-    rigidNodes_.allocate(drivesRigidNodes() ? nodes : 0);
-    grid_.fContact.assign(!rigid_.empty() || contact_ ? nodes : 0, Vector2::Zero());
-    rigidLoads_.assign(contact_ ? static_cast<std::size_t>(contact_->nBodies()) : rigid_.size(), RigidBodyLoad{});
 }
 
 void MpmSolver::setRigidBodies(std::vector<std::unique_ptr<RigidBodyDriver>> drivers)
 {
+    attachRigidBodies(std::move(drivers));
+    coupleGrid(coupling_->releaseContact());  // a rigid body may come or go: the strategy with it
+}
+
+void MpmSolver::attachRigidBodies(std::vector<std::unique_ptr<RigidBodyDriver>> drivers)
+{
     // Keep the table only when some body is rigid: otherwise no rigid pass runs at all.
     const bool anyRigid = std::any_of(drivers.begin(), drivers.end(), [](const auto& d) { return d != nullptr; });
     rigid_ = anyRigid ? std::move(drivers) : std::vector<std::unique_ptr<RigidBodyDriver>>{};
-    allocateExchange();
     if (anyRigid) {
         // Mass properties per body (particle domains as rectangles for the inertia).
         std::vector<RigidBodyInfo> info(rigid_.size());
@@ -433,23 +318,11 @@ void MpmSolver::markDeformingMaterials()
     if (!any) materialDeforms_.assign(materials_.size(), 1);
 }
 
-void MpmSolver::useLoads(std::vector<std::unique_ptr<ParticleLoad>> loads,
-                         const std::vector<std::string>& bodyNames)
-{
-    loads_ = std::move(loads);
-    for (auto& load : loads_) load->initialise(particles_, grid_, bodyNames);
-    particleForce_.assign(loads_.empty() ? 0 : particles_.size(), Vector2::Zero());
-}
-
 void MpmSolver::computeForces()
 {
     auto timer = timers_.time("forces");
     const Particles& p = particles_;
     const int stride = weights_.stride;
-    if (!loads_.empty()) {
-        std::fill(particleForce_.begin(), particleForce_.end(), Vector2::Zero());
-        for (const auto& load : loads_) load->addForces(time_, p, particleForce_);
-    }
     if (cellMean_)
         cellMean_->average(p, [&](std::size_t q) { return 0.5 * (p.sigma[q][XX] + p.sigma[q][YY]); }, cellMeanValue_);
     strips_.forEach([&](std::size_t q) {
@@ -461,15 +334,14 @@ void MpmSolver::computeForces()
             s[YY] += shift;
         }
         const std::size_t k0 = q * stride;
-        BodyField* body = contact_ ? &contact_->field(p.body[q]) : nullptr;
+        BodyField* body = coupling_->bodyField(p.body[q]);
         for (int a = 0; a < stride; ++a) {
             const int n = weights_.node[k0 + a];
             if (n < 0) continue;
             const Vector2& dN = weights_.dN[k0 + a];
             // eq. 2.3.8: F_int = -sum_p V_p B_p^T sigma_p
             const Vector2 fInt = -p.V[q] * Vector2(s[XX] * dN.x() + s[XY] * dN.y(), s[XY] * dN.x() + s[YY] * dN.y());
-            Vector2 fExt = (weights_.N[k0 + a] * p.m[q]) * gravity_;  // eq. 2.3.9
-            if (!loads_.empty()) fExt += weights_.N[k0 + a] * particleForce_[q];  // traction term
+            const Vector2 fExt = (weights_.N[k0 + a] * p.m[q]) * gravity_;  // eq. 2.3.9; loads: AppliedLoads
             grid_.fInt[n] += fInt;
             grid_.fExt[n] += fExt;
             // With a contact pass the same terms go to the body's own field too.
@@ -482,97 +354,9 @@ void MpmSolver::computeForces()
 void MpmSolver::updateGrid(double dt)
 {
     reach(StepPoint::beforeGridUpdate, dt);
-    if (contact_) updateBodyFields(dt);
-    else updateSingleField(dt);
+    EngineView engine = view();
+    coupling_->updateGrid(engine, time_ + dt, dt);
     reach(StepPoint::afterGridUpdate, dt);
-}
-
-void MpmSolver::updateSingleField(double dt)
-{
-    auto timer = timers_.time("gridUpdate");
-    grid_.forEachActiveNode([&](int n) {
-        Vector2 F = grid_.fInt[n] + grid_.fExt[n];
-        if (damping_ > 0) {
-            // eq. 3.3.5: F_damp = -alpha |F_ext + F_int| sign(v_n), per component.
-            for (int d = 0; d < 2; ++d) {
-                const double v = grid_.velocity[n][d];
-                const double sign = v > 0 ? 1.0 : (v < 0 ? -1.0 : 0.0);
-                F[d] -= damping_ * std::abs(F[d]) * sign;
-            }
-        }
-        // Nodes far lighter than any particle (a particle just touching the cell) would
-        // get a huge F/m: USL then feeds it into the strain (the small-mass instability).
-        grid_.accel[n] = grid_.mass[n] > minNodalMass_ ? Vector2(F / grid_.mass[n])
-                                                       : Vector2::Zero();  // eq. 2.4.2
-    });
-    // Rigid nodes: the acceleration that brings them to the body's velocity.
-    if (!rigid_.empty()) rigidNodes_.update(grid_, rigid_, time_ + dt, dt, gravity_, minNodalMass_, rigidLoads_);
-    grid_.forEachActiveNode([&](int n) {
-        grid_.velocity[n] += dt * grid_.accel[n];  // eq. 2.4.3
-    });
-    for (int s = 0; s < 4; ++s) boundaries_[s]->constrainUpdate(grid_.velocity, grid_.accel, dt, sideNodes_[s]);
-}
-
-void MpmSolver::updateBodyFields(double dt)
-{
-    const int nBodies = contact_->nBodies();
-    const auto isRigid = [&](int b) { return !rigid_.empty() && rigid_[b] != nullptr; };
-    const auto constrainBodies = [&] {
-        for (int b = 0; b < nBodies; ++b)
-            if (!isRigid(b))
-                for (int s = 0; s < 4; ++s)
-                    boundaries_[s]->constrainUpdate(contact_->field(b).velocity, contact_->field(b).accel, dt,
-                                                    sideNodes_[s]);
-    };
-    {
-        auto timer = timers_.time("gridUpdate");
-        for (int b = 0; b < nBodies; ++b) {
-            BodyField& f = contact_->field(b);
-            if (isRigid(b)) {  // a rigid body's field is its driver's velocity (seed A14)
-                for (int n : grid_.active) {  // drivers cache their motion: serial
-                    if (!(f.mass[n] > 0.0)) continue;
-                    const Vector2 vNew = rigid_[b]->velocity(time_ + dt, grid_.nodePosition(n));
-                    f.accel[n] = (vNew - f.velocity[n]) / dt;
-                    f.velocity[n] = vNew;
-                }
-                continue;
-            }
-            grid_.forEachActiveNode([&](int n) {
-                if (!(f.mass[n] > 0.0)) return;
-                Vector2 F = f.force[n];
-                // eq. 3.3.5 on the body's own field. Not at a node shared with another body:
-                // there the contact takes the unbalanced force, and a damping force would only
-                // come back as a false contact load.
-                if (damping_ > 0 && !contact_->shared(n)) {
-                    for (int d = 0; d < 2; ++d) {
-                        const double v = f.velocity[n][d];
-                        F[d] -= damping_ * std::abs(F[d]) * (v > 0 ? 1.0 : (v < 0 ? -1.0 : 0.0));
-                    }
-                }
-                f.accel[n] = f.mass[n] > minNodalMass_ ? Vector2(F / f.mass[n]) : Vector2::Zero();  // eq. 2.4.2
-                f.velocity[n] += dt * f.accel[n];                                                // eq. 2.4.3
-            });
-        }
-        constrainBodies();
-    }
-    {
-        auto timer = timers_.time("contact");  // seed G.4 steps 2 and 4
-        contactNodes_ = contact_->correct(grid_, particles_, rigid_, time_ + dt, dt, rigidLoads_);
-    }
-    auto timer = timers_.time("gridUpdate");
-    constrainBodies();
-    // The centre-of-mass field, for the grid output and function objects.
-    grid_.forEachActiveNode([&](int n) {
-        if (!(grid_.mass[n] > 0.0)) return;
-        Vector2 momentum = Vector2::Zero(), rate = Vector2::Zero();
-        for (int b = 0; b < nBodies; ++b) {
-            const BodyField& f = contact_->field(b);
-            momentum += f.mass[n] * f.velocity[n];
-            rate += f.mass[n] * f.accel[n];
-        }
-        grid_.velocity[n] = momentum / grid_.mass[n];
-        grid_.accel[n] = rate / grid_.mass[n];
-    });
 }
 
 void MpmSolver::updateStress(double dt)
@@ -588,7 +372,7 @@ void MpmSolver::updateStress(double dt)
             if (driverOf(q)) return L;  // rigid: no strain, no spin, no volume change
             const std::size_t k0 = q * stride;
             // With a contact pass each body deforms with its own velocity field.
-            const std::vector<Vector2>& velocity = contact_ ? contact_->field(p.body[q]).velocity : grid_.velocity;
+            const std::vector<Vector2>& velocity = coupling_->velocity(grid_, coupling_->fieldOf(p.body[q]));
             for (int a = 0; a < stride; ++a) {
                 const int n = weights_.node[k0 + a];
                 if (n < 0) continue;
@@ -637,8 +421,7 @@ void MpmSolver::updateStress(double dt)
 
 void MpmSolver::gridToParticles(double dt)
 {
-    const int order = transfer_->filterOrder();
-    if (order >= 1) filterVelocity(dt, order);
+    reach(StepPoint::beforeGridToParticles, dt);
     auto timer = timers_.time("gridToParticles");
     Particles& p = particles_;
     const int stride = weights_.stride;
@@ -650,10 +433,10 @@ void MpmSolver::gridToParticles(double dt)
         Vector2 vNew = Vector2::Zero(), a = Vector2::Zero(), vStar = Vector2::Zero();
         const std::size_t k0 = q * stride;
         // With a contact pass each body moves with its own corrected field (seed G.4 steps 3-4).
-        const BodyField* body = contact_ ? &contact_->field(p.body[q]) : nullptr;
-        const std::vector<Vector2>& velocity = body ? body->velocity : grid_.velocity;
-        const std::vector<Vector2>& accel = body ? body->accel : grid_.accel;
-        const std::vector<Vector2>* star = order >= 1 ? &filtered_[body ? p.body[q] : 0] : nullptr;
+        const int f = coupling_->fieldOf(p.body[q]);
+        const std::vector<Vector2>& velocity = coupling_->velocity(grid_, f);
+        const std::vector<Vector2>& accel = coupling_->accel(grid_, f);
+        const std::vector<Vector2>* star = filter_ ? &filter_->field(f) : nullptr;
         for (int k = 0; k < stride; ++k) {
             const int n = weights_.node[k0 + k];
             if (n < 0) continue;
@@ -670,7 +453,7 @@ void MpmSolver::gridToParticles(double dt)
         // its nodes) then decays instead of persisting. PIC and APIC: share 0.
         else p.v[q] = flip * (p.v[q] + dt * a) + (1.0 - flip) * vNew;
         const bool failed = !std::isfinite(p.v[q].x() + p.v[q].y());
-        const bool returned = !grid_.contains(p.x[q]) && keepInsideWalls(static_cast<std::size_t>(q));
+        const bool returned = !grid_.contains(p.x[q]) && sides_.keepInsideWalls(grid_, p.x[q], p.v[q]);
         return failed ? LoopMark::failure : (returned ? LoopMark::noted : LoopMark::none);
     });
     wallReturns_ += static_cast<std::size_t>(report.notes);
@@ -688,45 +471,25 @@ void MpmSolver::gridToParticles(double dt)
     reach(StepPoint::afterGridToParticles, dt);
 }
 
+void MpmSolver::endStep(double dt)
+{
+    advanceRigidBodies(dt);
+    removeOutflow();  // particles gone through an opening (silo outlet)
+    reach(StepPoint::endOfStep, dt);
+}
+
 void MpmSolver::advanceRigidBodies(double dt)
 {
     for (std::size_t b = 0; b < rigid_.size(); ++b)
-        if (rigid_[b]) rigid_[b]->advance(time_, dt, rigidLoads_[b]);
+        if (rigid_[b]) rigid_[b]->advance(time_, dt, coupling_->loads()[b]);
 }
 
 void MpmSolver::remapVelocity(double dt)
 {
     auto timer = timers_.time("particlesToGrid");
     const Particles& p = particles_;
-    const int stride = weights_.stride;
-    grid_.forEachActiveNode([&](int n) {
-        grid_.momentum[n].setZero();
-        if (contact_)
-            for (int b = 0; b < contact_->nBodies(); ++b) contact_->field(b).momentum[n].setZero();
-    });
-    strips_.forEach([&](std::size_t q) {
-        const std::size_t k0 = q * stride;
-        BodyField* body = contact_ ? &contact_->field(p.body[q]) : nullptr;
-        // APIC: C_p about the position the weights were taken at (x_p^t = x_p^{t+1} - dt v_p,
-        // v_p being the nodal velocity the particle moved with).
-        const Vector2 xp = p.carries(FieldGroup::affine) ? Vector2(p.x[q] - dt * p.v[q]) : p.x[q];
-        for (int a = 0; a < stride; ++a) {
-            const int n = weights_.node[k0 + a];
-            if (n < 0) continue;
-            const Vector2 momentum = (weights_.N[k0 + a] * p.m[q]) * carriedVelocity(q, n, xp);
-            grid_.momentum[n] += momentum;
-            if (body) body->momentum[n] += momentum;
-        }
-    });
-    grid_.forEachActiveNode([&](int n) {
-        grid_.velocity[n] = grid_.mass[n] > 0.0 ? Vector2(grid_.momentum[n] / grid_.mass[n]) : Vector2::Zero();
-    });
-    if (drivesRigidNodes()) rigidNodes_.constrain(grid_, rigid_, time_ + dt);
-    applyBoundaries(grid_.velocity);
-    if (contact_) {
-        bodyVelocities(time_ + dt);
-        contact_->correctRemapped(grid_, rigid_, time_ + dt);
-    }
+    EngineView engine = view();
+    coupling_->remapVelocity(engine, time_ + dt, dt);
     if (p.carries(FieldGroup::affine)) {
         // APIC: C_p again, from the remapped nodal velocity: a mass-weighted mean of the
         // particles' motion, where v^{t+1} of a node that a particle barely touches holds
@@ -734,7 +497,7 @@ void MpmSolver::remapVelocity(double dt)
         const auto nParticles = static_cast<long>(p.size());
         parallelFor(nParticles, [&](long q) {
             if (driverOf(q)) return;
-            const std::vector<Vector2>& velocity = contact_ ? contact_->field(p.body[q]).velocity : grid_.velocity;
+            const std::vector<Vector2>& velocity = coupling_->velocity(grid_, coupling_->fieldOf(p.body[q]));
             formAffine(static_cast<std::size_t>(q), velocity, p.x[q] - dt * p.v[q]);
         });
     }
@@ -765,58 +528,20 @@ double MpmSolver::bytesPerParticle() const
     if (particles_.size() == 0) return 0.0;
     const std::size_t weights = weights_.node.capacity() * sizeof(int) + weights_.N.capacity() * sizeof(double) +
                                 weights_.dN.capacity() * sizeof(Vector2);
-    const std::size_t loads = particleForce_.capacity() * sizeof(Vector2);
+    std::size_t passes = 0;
+    for (const auto& pass : passes_) passes += pass->particleBytes();
     const std::size_t cellMeans = cellMean_ ? cellMean_->particleBytes() + cellMeanValue_.capacity() * sizeof(double) +
                                                   velocityGradient_.capacity() * sizeof(Eigen::Matrix2d)
                                             : 0;
-    return double(particles_.bytes() + weights + loads + cellMeans) / double(particles_.size());
-}
-
-bool MpmSolver::leftThroughOpening(const Vector2& x) const
-{
-    const Vector2 low = grid_.origin(), high = grid_.upper();
-    // The cell a particle leaves through moves freely where one of its nodes on the side is
-    // open: the stretch of the opening widens by a cell on each side.
-    const auto open = [&](GridSide side) {
-        const BoundaryCondition& bc = *boundaries_[static_cast<int>(side)];
-        const double s = bc.along(x);
-        const double h = side == GridSide::left || side == GridSide::right ? grid_.cellSize().y() : grid_.cellSize().x();
-        return bc.isOpen(s) || bc.isOpen(s - h) || bc.isOpen(s + h);
-    };
-    return (x.x() < low.x() && open(GridSide::left)) || (x.x() > high.x() && open(GridSide::right)) ||
-           (x.y() < low.y() && open(GridSide::bottom)) || (x.y() > high.y() && open(GridSide::top));
-}
-
-bool MpmSolver::keepInsideWalls(std::size_t q)
-{
-    Particles& p = particles_;
-    Vector2& x = p.x[q];
-    if (!std::isfinite(x.x()) || !std::isfinite(x.y())) return false;
-    if (hasOutlet_ && leftThroughOpening(x)) return false;  // removeOutflow takes it
-    const Vector2 low = grid_.origin(), high = grid_.upper(), h = grid_.cellSize();
-    bool moved = false;
-    for (int s = 0; s < 4; ++s) {
-        const BoundaryCondition& bc = *boundaries_[s];
-        const int axis = s == static_cast<int>(GridSide::left) || s == static_cast<int>(GridSide::right) ? 0 : 1;
-        const bool lowSide = s == static_cast<int>(GridSide::left) || s == static_cast<int>(GridSide::bottom);
-        const double side = lowSide ? low[axis] : high[axis];
-        const double past = lowSide ? side - x[axis] : x[axis] - side;
-        // Only a small overshoot through a closed wall: anything larger is left for the
-        // stability guard to report, and an open stretch lets the particle go.
-        if (!(past > 0.0) || past > 0.5 * h[axis] || !bc.isWall()) continue;
-        x[axis] = side;
-        if (lowSide ? p.v[q][axis] < 0.0 : p.v[q][axis] > 0.0) p.v[q][axis] = 0.0;
-        moved = true;
-    }
-    return moved;
+    return double(particles_.bytes() + weights + passes + cellMeans) / double(particles_.size());
 }
 
 std::size_t MpmSolver::removeOutflow()
 {
-    if (!hasOutlet_) return 0;
+    if (!sides_.hasOutlet()) return 0;
     Particles& p = particles_;
     const auto n = static_cast<long>(p.size());
-    const auto leaves = [&](std::size_t q) { return !grid_.contains(p.x[q]) && !driverOf(q) && leftThroughOpening(p.x[q]); };
+    const auto leaves = [&](std::size_t q) { return !grid_.contains(p.x[q]) && !driverOf(q) && sides_.leftThroughOpening(grid_, p.x[q]); };
     const long leaving = parallelCount(n, [&](long q) { return leaves(static_cast<std::size_t>(q)); });
     if (leaving == 0) return 0;
     // Keep the others in their order (blocks stay contiguous); tell the loads.
@@ -831,8 +556,7 @@ std::size_t MpmSolver::removeOutflow()
         kept.push_back(q);
     }
     p.reorder(kept);
-    for (auto& load : loads_) load->renumber(newIndex);
-    if (!particleForce_.empty()) particleForce_.resize(p.size());
+    renumberPasses(newIndex);
     reindex();
     return static_cast<std::size_t>(leaving);
 }

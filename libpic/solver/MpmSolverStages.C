@@ -11,7 +11,7 @@ namespace gpic {
 
 void MpmSolver::replaceParticles(Particles particles)
 {
-    if (!loads_.empty())
+    if (passesHoldIndices())
         throw RunError("the applied loads of constant/loads hold particle indices: a stage may not "
                        "add or remove particles in a case with loads");
     particles_ = std::move(particles);
@@ -31,16 +31,7 @@ void MpmSolver::projectToGrid()
 
 void MpmSolver::refreshOpenings()
 {
-    // An open stretch's nodes are left free, a closed one is a wall.
-    hasOutlet_ = false;
-    for (int s = 0; s < 4; ++s) {
-        const BoundaryCondition& bc = *boundaries_[s];
-        sideNodes_[s].clear();
-        for (int n : grid_.sideNodes(static_cast<GridSide>(s)))
-            if (bc.isOpen(bc.along(grid_.nodePosition(n)))) hasOutlet_ = true;
-            else sideNodes_[s].push_back(n);
-        hasOutlet_ = hasOutlet_ || bc.letsOut();
-    }
+    sides_.refresh(grid_);
 }
 
 } // namespace gpic

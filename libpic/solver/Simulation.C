@@ -303,8 +303,7 @@ void Simulation::takeStep()
         // At fixed step indices, so that a restart sorts exactly as the straight run.
         if (case_->sortInterval > 0 && step_ % case_->sortInterval == 0) solver_.sortParticles();
         case_->scheme->advance(solver_, deltaT_);
-        solver_.advanceRigidBodies(deltaT_);
-        solver_.removeOutflow();  // particles gone through an opening (silo outlet)
+        solver_.endStep(deltaT_);
     } catch (const RunError& e) {
         // The particle to blame, where the guard finds one in what the solver left.
         stop(guard_->diagnose(time_, step_ + 1, deltaT_),

@@ -1,4 +1,4 @@
-#include "bodies/RigidNodeCoupling.H"
+#include "gridCoupling/RigidNodeCoupling.H"
 
 namespace gpic {
 

@@ -1,0 +1,173 @@
+#include "gridCoupling/MultiField.H"
+
+#include "core/Registry.H"
+#include "solver/EnginePass.H"
+
+#include <cmath>
+
+namespace gpic {
+
+GPIC_REGISTER(GridCoupling, MultiField, "multiField");
+
+void MultiField::particlesToGrid(EngineView& e, double t)
+{
+    Grid& grid = e.grid;
+    ContactPass& bodies = *contact_;
+    bodies.reset(grid.active);
+    grid.resetFields();
+    const Particles& p = e.particles;
+    const ShapeWeights& w = e.weights;
+    const int stride = w.stride;
+    e.strips.forEach([&](std::size_t q) {
+        const std::size_t k0 = q * stride;
+        BodyField& body = bodies.field(p.body[q]);
+        for (int a = 0; a < stride; ++a) {
+            const int n = w.node[k0 + a];
+            const double N = w.N[k0 + a];
+            if (n < 0) continue;
+            grid.markActive(n);  // also at N = 0: its gradient may still carry force
+            // The body's own field, from its particles only (seed G.4 step 1).
+            body.mass[n] += N * p.m[q];
+            body.momentum[n] += (N * p.m[q]) * e.carriedVelocity(q, n, p.x[q]);
+        }
+    });
+    grid.collectActive();
+    // The system (centre-of-mass) field is the sum of the bodies' (F.8.6).
+    grid.forEachActiveNode([&](int n) {
+        for (int b = 0; b < bodies.nBodies(); ++b) {
+            const BodyField& f = bodies.field(b);
+            grid.mass[n] += f.mass[n];
+            grid.momentum[n] += f.momentum[n];
+        }
+    });
+    grid.forEachActiveNode([&](int n) {
+        grid.velocity[n] = grid.mass[n] > 0.0 ? Vector2(grid.momentum[n] / grid.mass[n]) : Vector2::Zero();
+    });
+    applyBoundaries(e, grid.velocity);
+    bodyVelocities(e, t);
+}
+
+void MultiField::bodyVelocities(EngineView& e, double t)
+{
+    const Grid& grid = e.grid;
+    for (int b = 0; b < contact_->nBodies(); ++b) {
+        BodyField& f = contact_->field(b);
+        const RigidBodyDriver* driver = e.rigid.empty() ? nullptr : e.rigid[b].get();
+        if (driver) {  // drivers cache their motion: serial
+            for (int n : grid.active)
+                if (f.mass[n] > 0.0) f.velocity[n] = driver->velocity(t, grid.nodePosition(n));
+            continue;
+        }
+        grid.forEachActiveNode([&](int n) {
+            if (f.mass[n] > 0.0) f.velocity[n] = f.momentum[n] / f.mass[n];
+        });
+        applyBoundaries(e, f.velocity);
+    }
+}
+
+void MultiField::constrainBodies(EngineView& e, double dt)
+{
+    for (int b = 0; b < contact_->nBodies(); ++b)
+        if (e.rigid.empty() || !e.rigid[b])
+            e.sides.constrainUpdate(contact_->field(b).velocity, contact_->field(b).accel, dt);
+}
+
+void MultiField::updateGrid(EngineView& e, double tNew, double dt)
+{
+    Grid& grid = e.grid;
+    ContactPass& bodies = *contact_;
+    const int nBodies = bodies.nBodies();
+    {
+        auto timer = e.timers.time("gridUpdate");
+        for (int b = 0; b < nBodies; ++b) {
+            BodyField& f = bodies.field(b);
+            if (!e.rigid.empty() && e.rigid[b]) {  // a rigid body's field is its driver's velocity (seed A14)
+                for (int n : grid.active) {  // drivers cache their motion: serial
+                    if (!(f.mass[n] > 0.0)) continue;
+                    const Vector2 vNew = e.rigid[b]->velocity(tNew, grid.nodePosition(n));
+                    f.accel[n] = (vNew - f.velocity[n]) / dt;
+                    f.velocity[n] = vNew;
+                }
+                continue;
+            }
+            grid.forEachActiveNode([&](int n) {
+                if (!(f.mass[n] > 0.0)) return;
+                Vector2 F = f.force[n];
+                // eq. 3.3.5 on the body's own field. Not at a node shared with another body:
+                // there the contact takes the unbalanced force, and a damping force would only
+                // come back as a false contact load.
+                if (e.damping > 0 && !bodies.shared(n)) {
+                    for (int d = 0; d < 2; ++d) {
+                        const double v = f.velocity[n][d];
+                        F[d] -= e.damping * std::abs(F[d]) * (v > 0 ? 1.0 : (v < 0 ? -1.0 : 0.0));
+                    }
+                }
+                f.accel[n] = f.mass[n] > e.minNodalMass ? Vector2(F / f.mass[n]) : Vector2::Zero();  // eq. 2.4.2
+                f.velocity[n] += dt * f.accel[n];                                                  // eq. 2.4.3
+            });
+        }
+        constrainBodies(e, dt);
+    }
+    {
+        auto timer = e.timers.time("contact");  // seed G.4 steps 2 and 4
+        contactNodes_ = bodies.correct(grid, e.particles, e.rigid, tNew, dt, loads_);
+    }
+    auto timer = e.timers.time("gridUpdate");
+    constrainBodies(e, dt);
+    // The centre-of-mass field, for the grid output and function objects.
+    grid.forEachActiveNode([&](int n) {
+        if (!(grid.mass[n] > 0.0)) return;
+        Vector2 momentum = Vector2::Zero(), rate = Vector2::Zero();
+        for (int b = 0; b < nBodies; ++b) {
+            const BodyField& f = bodies.field(b);
+            momentum += f.mass[n] * f.velocity[n];
+            rate += f.mass[n] * f.accel[n];
+        }
+        grid.velocity[n] = momentum / grid.mass[n];
+        grid.accel[n] = rate / grid.mass[n];
+    });
+}
+
+void MultiField::remapVelocity(EngineView& e, double tNew, double dt)
+{
+    Grid& grid = e.grid;
+    ContactPass& bodies = *contact_;
+    const Particles& p = e.particles;
+    const ShapeWeights& w = e.weights;
+    const int stride = w.stride;
+    grid.forEachActiveNode([&](int n) {
+        grid.momentum[n].setZero();
+        for (int b = 0; b < bodies.nBodies(); ++b) bodies.field(b).momentum[n].setZero();
+    });
+    e.strips.forEach([&](std::size_t q) {
+        const std::size_t k0 = q * stride;
+        BodyField& body = bodies.field(p.body[q]);
+        // APIC: C_p about the position the weights were taken at (SingleField.C).
+        const Vector2 xp = p.carries(FieldGroup::affine) ? Vector2(p.x[q] - dt * p.v[q]) : p.x[q];
+        for (int a = 0; a < stride; ++a) {
+            const int n = w.node[k0 + a];
+            if (n < 0) continue;
+            const Vector2 momentum = (w.N[k0 + a] * p.m[q]) * e.carriedVelocity(q, n, xp);
+            grid.momentum[n] += momentum;
+            body.momentum[n] += momentum;
+        }
+    });
+    grid.forEachActiveNode([&](int n) {
+        grid.velocity[n] = grid.mass[n] > 0.0 ? Vector2(grid.momentum[n] / grid.mass[n]) : Vector2::Zero();
+    });
+    applyBoundaries(e, grid.velocity);
+    bodyVelocities(e, tNew);
+    bodies.correctRemapped(grid, e.rigid, tNew);
+}
+
+void MultiField::forEachRigidNode(const Grid& grid, const Drivers& rigid,
+                                  const std::function<void(int, int)>& visit) const
+{
+    if (rigid.empty()) return;
+    for (int b = 0; b < contact_->nBodies(); ++b)
+        if (rigid[b])
+            for (int n : grid.active)
+                if (contact_->field(b).mass[n] > 0.0) visit(n, b);
+}
+
+} // namespace gpic

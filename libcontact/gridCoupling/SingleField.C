@@ -1,0 +1,96 @@
+#include "gridCoupling/SingleField.H"
+
+#include "core/Registry.H"
+#include "solver/EnginePass.H"
+
+#include <cmath>
+
+namespace gpic {
+
+GPIC_REGISTER(GridCoupling, SingleField, "singleField");
+
+void SingleField::particlesToGrid(EngineView& e, double t)
+{
+    Grid& grid = e.grid;
+    if (driven_) driven_->reset(grid.active);
+    grid.resetFields();
+    const Particles& p = e.particles;
+    const ShapeWeights& w = e.weights;
+    const int stride = w.stride;
+    e.strips.forEach([&](std::size_t q) {
+        const std::size_t k0 = q * stride;
+        const bool rigidParticle = driven_ && e.rigid[p.body[q]];
+        for (int a = 0; a < stride; ++a) {
+            const int n = w.node[k0 + a];
+            const double N = w.N[k0 + a];
+            if (n < 0) continue;
+            grid.markActive(n);  // also at N = 0: its gradient may still carry force
+            const Vector2 v = e.carriedVelocity(q, n, p.x[q]);  // APIC: v_p + C_p (x_i - x_p)
+            if (rigidParticle) driven_->add(n, p.body[q], N, N * p.m[q], v);
+            grid.mass[n] += N * p.m[q];             // lumped mass, row sums of eq. 2.3.7
+            grid.momentum[n] += (N * p.m[q]) * v;  // eq. 2.4.1
+        }
+    });
+    grid.collectActive();
+    // No small-mass cut-off: p_i/m_i is a weighted mean of particle velocities, exact for
+    // any m_i > 0; zeroing light nodes would put spurious strain into a rigid translation.
+    grid.forEachActiveNode([&](int n) {
+        grid.velocity[n] = grid.mass[n] > 0.0 ? Vector2(grid.momentum[n] / grid.mass[n]) : Vector2::Zero();
+    });
+    if (driven_) driven_->constrain(grid, e.rigid, t);
+    applyBoundaries(e, grid.velocity);
+}
+
+void SingleField::updateGrid(EngineView& e, double tNew, double dt)
+{
+    auto timer = e.timers.time("gridUpdate");
+    Grid& grid = e.grid;
+    const double alpha = e.damping;
+    grid.forEachActiveNode([&](int n) {
+        Vector2 F = grid.fInt[n] + grid.fExt[n];
+        if (alpha > 0) {
+            // eq. 3.3.5: F_damp = -alpha |F_ext + F_int| sign(v_n), per component.
+            for (int d = 0; d < 2; ++d) {
+                const double v = grid.velocity[n][d];
+                const double sign = v > 0 ? 1.0 : (v < 0 ? -1.0 : 0.0);
+                F[d] -= alpha * std::abs(F[d]) * sign;
+            }
+        }
+        // Nodes far lighter than any particle (a particle just touching the cell) would
+        // get a huge F/m: USL then feeds it into the strain (the small-mass instability).
+        grid.accel[n] = grid.mass[n] > e.minNodalMass ? Vector2(F / grid.mass[n]) : Vector2::Zero();  // eq. 2.4.2
+    });
+    // Rigid nodes: the acceleration that brings them to the body's velocity.
+    if (driven_) driven_->update(grid, e.rigid, tNew, dt, e.gravity, e.minNodalMass, loads_);
+    grid.forEachActiveNode([&](int n) {
+        grid.velocity[n] += dt * grid.accel[n];  // eq. 2.4.3
+    });
+    e.sides.constrainUpdate(grid.velocity, grid.accel, dt);
+}
+
+void SingleField::remapVelocity(EngineView& e, double tNew, double dt)
+{
+    Grid& grid = e.grid;
+    const Particles& p = e.particles;
+    const ShapeWeights& w = e.weights;
+    const int stride = w.stride;
+    grid.forEachActiveNode([&](int n) { grid.momentum[n].setZero(); });
+    e.strips.forEach([&](std::size_t q) {
+        const std::size_t k0 = q * stride;
+        // APIC: C_p about the position the weights were taken at (x_p^t = x_p^{t+1} - dt v_p,
+        // v_p being the nodal velocity the particle moved with).
+        const Vector2 xp = p.carries(FieldGroup::affine) ? Vector2(p.x[q] - dt * p.v[q]) : p.x[q];
+        for (int a = 0; a < stride; ++a) {
+            const int n = w.node[k0 + a];
+            if (n < 0) continue;
+            grid.momentum[n] += (w.N[k0 + a] * p.m[q]) * e.carriedVelocity(q, n, xp);
+        }
+    });
+    grid.forEachActiveNode([&](int n) {
+        grid.velocity[n] = grid.mass[n] > 0.0 ? Vector2(grid.momentum[n] / grid.mass[n]) : Vector2::Zero();
+    });
+    if (driven_) driven_->constrain(grid, e.rigid, tNew);
+    applyBoundaries(e, grid.velocity);
+}
+
+} // namespace gpic
