@@ -83,8 +83,10 @@ void stopsCleanlyOn(int signal, const std::string& name)
     EXPECT_EQ(errors[0].rfind("Error: run stopped by " + name + " at t = ", 0), 0u) << errors[0];
 
     // The state written is the latest time directory, named in the message, in the index.
+    // On a loaded machine the signal may land while 0.1 is still being finished: then 0.1
+    // is the current state and nothing more is written.
     const auto times = gpic::listTimeDirectories(dir.string());
-    ASSERT_GE(times.size(), 3u);
+    ASSERT_GE(times.size(), 2u);
     const std::string last = times.back().second;
     EXPECT_NE(errors[0].find("written to " + (dir / last).string()), std::string::npos) << errors[0];
     EXPECT_TRUE(fs::exists(dir / last / "particles.vtp"));

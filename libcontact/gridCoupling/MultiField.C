@@ -43,7 +43,7 @@ void MultiField::particlesToGrid(EngineView& e, double t)
     grid.forEachActiveNode([&](int n) {
         grid.velocity[n] = grid.mass[n] > 0.0 ? Vector2(grid.momentum[n] / grid.mass[n]) : Vector2::Zero();
     });
-    applyBoundaries(e, grid.velocity);
+    e.sides.constrain(grid.velocity);
     bodyVelocities(e, t);
 }
 
@@ -61,7 +61,7 @@ void MultiField::bodyVelocities(EngineView& e, double t)
         grid.forEachActiveNode([&](int n) {
             if (f.mass[n] > 0.0) f.velocity[n] = f.momentum[n] / f.mass[n];
         });
-        applyBoundaries(e, f.velocity);
+        e.sides.constrain(f.velocity);
     }
 }
 
@@ -155,7 +155,7 @@ void MultiField::remapVelocity(EngineView& e, double tNew, double dt)
     grid.forEachActiveNode([&](int n) {
         grid.velocity[n] = grid.mass[n] > 0.0 ? Vector2(grid.momentum[n] / grid.mass[n]) : Vector2::Zero();
     });
-    applyBoundaries(e, grid.velocity);
+    e.sides.constrain(grid.velocity);
     bodyVelocities(e, tNew);
     bodies.correctRemapped(grid, e.rigid, tNew);
 }

@@ -38,7 +38,7 @@ void SingleField::particlesToGrid(EngineView& e, double t)
         grid.velocity[n] = grid.mass[n] > 0.0 ? Vector2(grid.momentum[n] / grid.mass[n]) : Vector2::Zero();
     });
     if (driven_) driven_->constrain(grid, e.rigid, t);
-    applyBoundaries(e, grid.velocity);
+    e.sides.constrain(grid.velocity);
 }
 
 void SingleField::updateGrid(EngineView& e, double tNew, double dt)
@@ -90,7 +90,7 @@ void SingleField::remapVelocity(EngineView& e, double tNew, double dt)
         grid.velocity[n] = grid.mass[n] > 0.0 ? Vector2(grid.momentum[n] / grid.mass[n]) : Vector2::Zero();
     });
     if (driven_) driven_->constrain(grid, e.rigid, tNew);
-    applyBoundaries(e, grid.velocity);
+    e.sides.constrain(grid.velocity);
 }
 
 } // namespace gpic

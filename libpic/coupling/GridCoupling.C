@@ -29,14 +29,9 @@ void GridCoupling::attach(Grid& grid, const Drivers& rigid)
 
 void GridCoupling::constrainFiltered(EngineView& e, int, std::vector<Vector2>& w, double) const
 {
-    applyBoundaries(e, w);
+    e.sides.constrain(w);
 }
 
 void GridCoupling::forEachRigidNode(const Grid&, const Drivers&, const std::function<void(int, int)>&) const {}
-
-void GridCoupling::applyBoundaries(EngineView& e, std::vector<Vector2>& field)
-{
-    e.sides.constrain(field);
-}
 
 } // namespace gpic

@@ -41,7 +41,7 @@ void CosseratRotation::at(StepPoint point, EngineView& e, double dt)
     case StepPoint::afterStressUpdate: addWork(e); break;  // the second half
     case StepPoint::afterGridToParticles: toParticles(e, dt); break;
     case StepPoint::afterRemap: remap(e); break;
-    case StepPoint::afterGridUpdate: break;
+    default: break;  // not one of points()
     }
 }
 

@@ -3,8 +3,6 @@
 #include "core/Threads.H"
 #include "core/error.H"
 
-#include <Eigen/LU>
-
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -24,9 +22,11 @@ void MpmSolver::useTransfer(std::unique_ptr<ParticleTransfer> transfer)
 {
     transfer_ = std::move(transfer);
     matchAffine();
-    affineCentre_.clear();
-    if (transfer_->affine())
-        for (int n = 0; n < grid_.nNodes(); ++n) affineCentre_.push_back(shape_->affineCentre(grid_, n));
+    if (transfer_->affine()) {
+        auto affine = std::make_unique<AffineVelocity>(grid_, *shape_);
+        affine_ = affine.get();
+        addPass(std::move(affine));
+    }
     if (transfer_->filterOrder() >= 1) {
         auto filter = std::make_unique<XpicFilter>(transfer_->filterOrder());
         filter_ = filter.get();
@@ -38,28 +38,6 @@ void MpmSolver::matchAffine()
 {
     if (transfer_->affine()) particles_.carry(FieldGroup::affine);  // C_p zero for particles that had none
     else particles_.drop(FieldGroup::affine);
-}
-
-void MpmSolver::formAffine(std::size_t q, const std::vector<Vector2>& velocity, const Vector2& xp)
-{
-    Particles& p = particles_;
-    const int stride = weights_.stride;
-    const std::size_t k0 = q * stride;
-    const bool fromGradient = shape_->affineFromGradient();
-    Eigen::Matrix2d B = Eigen::Matrix2d::Zero(), D = Eigen::Matrix2d::Zero();
-    for (int k = 0; k < stride; ++k) {
-        const int n = weights_.node[k0 + k];
-        if (n < 0) continue;
-        const double N = weights_.N[k0 + k];
-        const Vector2 r = affineCentre_[n] - xp;
-        D.noalias() += (N * r) * r.transpose();  // D_p, h^2/4 I inside a B-spline grid
-        // bilinear: B_p D_p^-1 is the velocity gradient (D_p singular on a grid line)
-        if (fromGradient) B.noalias() += velocity[n] * weights_.dN[k0 + k].transpose();
-        else B.noalias() += (N * velocity[n]) * r.transpose();  // B_p (Jiang et al. 2015)
-    }
-    Eigen::Matrix2d& C = p.affine[q];
-    C = fromGradient ? B : Eigen::Matrix2d(B * D.inverse());
-    p.affineEnergy[q] = 0.5 * p.m[q] * (C * D * C.transpose()).trace();
 }
 
 bool MpmSolver::needsRotation(const Particles& particles, const std::vector<std::unique_ptr<Material>>& materials)
@@ -107,10 +85,16 @@ void MpmSolver::coupleGrid(std::unique_ptr<ContactPass> contact)
     coupling_->attach(grid_, rigid_);
 }
 
+const std::vector<Vector2>& MpmSolver::affineCentres() const
+{
+    static const std::vector<Vector2> none;
+    return affine_ ? affine_->centres() : none;
+}
+
 EngineView MpmSolver::view()
 {
     return EngineView{grid_,    particles_, weights_, strips_,       sides_,        rigid_,  *coupling_, *transfer_,
-                      gravity_, time_,      damping_, minNodalMass_, affineCentre_, timers_};
+                      gravity_, time_,      damping_, minNodalMass_, affineCentres(), timers_};
 }
 
 void MpmSolver::enableRotation()
@@ -279,24 +263,7 @@ void MpmSolver::attachRigidBodies(std::vector<std::unique_ptr<RigidBodyDriver>> 
     const bool anyRigid = std::any_of(drivers.begin(), drivers.end(), [](const auto& d) { return d != nullptr; });
     rigid_ = anyRigid ? std::move(drivers) : std::vector<std::unique_ptr<RigidBodyDriver>>{};
     if (anyRigid) {
-        // Mass properties per body (particle domains as rectangles for the inertia).
-        std::vector<RigidBodyInfo> info(rigid_.size());
-        for (std::size_t q = 0; q < particles_.size(); ++q) {
-            auto& b = info[particles_.body[q]];
-            b.mass += particles_.m[q];
-            b.centroid += particles_.m[q] * particles_.x[q];
-            b.velocity += particles_.m[q] * particles_.v[q];
-        }
-        for (auto& b : info) {
-            if (b.mass > 0) b.centroid /= b.mass;
-            if (b.mass > 0) b.velocity /= b.mass;
-            b.gravity = gravity_;
-        }
-        for (std::size_t q = 0; q < particles_.size(); ++q) {
-            auto& b = info[particles_.body[q]];
-            const Vector2& a = particles_.halfSize[q];
-            b.inertia += particles_.m[q] * ((particles_.x[q] - b.centroid).squaredNorm() + a.squaredNorm() / 3.0);
-        }
+        const auto info = RigidBodyInfo::ofBodies(particles_, rigid_.size(), gravity_);
         for (std::size_t b = 0; b < rigid_.size(); ++b)
             if (rigid_[b]) rigid_[b]->attach(info[b]);
     }
@@ -427,7 +394,6 @@ void MpmSolver::gridToParticles(double dt)
     const int stride = weights_.stride;
     const auto nParticles = static_cast<long>(p.size());
     const double flip = transfer_->flipShare(dt);
-    const bool affine = p.carries(FieldGroup::affine);
     const LoopReport report = parallelForChecked(nParticles, [&](long q) {
         if (driverOf(q)) return LoopMark::none;  // moved below
         Vector2 vNew = Vector2::Zero(), a = Vector2::Zero(), vStar = Vector2::Zero();
@@ -445,7 +411,7 @@ void MpmSolver::gridToParticles(double dt)
             a += N * accel[n];
             if (star) vStar += N * (*star)[n];
         }
-        if (affine) formAffine(static_cast<std::size_t>(q), velocity, p.x[q]);
+        if (affine_) affine_->form(p, weights_, static_cast<std::size_t>(q), velocity, p.x[q]);
         p.x[q] += dt * vNew;  // eq. 2.4.7
         if (star) p.v[q] = vStar + dt * a;  // XPIC: the filtered v^t plus the increment
         // eq. 2.4.8 (FLIP), blended with PIC when the FLIP share is below 1: a particle's own
@@ -487,21 +453,9 @@ void MpmSolver::advanceRigidBodies(double dt)
 void MpmSolver::remapVelocity(double dt)
 {
     auto timer = timers_.time("particlesToGrid");
-    const Particles& p = particles_;
     EngineView engine = view();
     coupling_->remapVelocity(engine, time_ + dt, dt);
-    if (p.carries(FieldGroup::affine)) {
-        // APIC: C_p again, from the remapped nodal velocity: a mass-weighted mean of the
-        // particles' motion, where v^{t+1} of a node that a particle barely touches holds
-        // dt F/m of a tiny mass (the small-mass instability, Sulsky et al. 1995).
-        const auto nParticles = static_cast<long>(p.size());
-        parallelFor(nParticles, [&](long q) {
-            if (driverOf(q)) return;
-            const std::vector<Vector2>& velocity = coupling_->velocity(grid_, coupling_->fieldOf(p.body[q]));
-            formAffine(static_cast<std::size_t>(q), velocity, p.x[q] - dt * p.v[q]);
-        });
-    }
-    reach(StepPoint::afterRemap, dt);
+    reach(StepPoint::afterRemap, dt);  // APIC: C_p from the remapped velocity (AffineVelocity)
 }
 
 double MpmSolver::maxParticleSpeed() const
