@@ -40,9 +40,7 @@ void MultiField::particlesToGrid(EngineView& e, double t)
             grid.momentum[n] += f.momentum[n];
         }
     });
-    grid.forEachActiveNode([&](int n) {
-        grid.velocity[n] = grid.mass[n] > 0.0 ? Vector2(grid.momentum[n] / grid.mass[n]) : Vector2::Zero();
-    });
+    grid.velocitiesFromMomenta();
     e.sides.constrain(grid.velocity);
     bodyVelocities(e, t);
 }
@@ -142,8 +140,7 @@ void MultiField::remapVelocity(EngineView& e, double tNew, double dt)
     e.strips.forEach([&](std::size_t q) {
         const std::size_t k0 = q * stride;
         BodyField& body = bodies.field(p.body[q]);
-        // APIC: C_p about the position the weights were taken at (SingleField.C).
-        const Vector2 xp = p.carries(FieldGroup::affine) ? Vector2(p.x[q] - dt * p.v[q]) : p.x[q];
+        const Vector2 xp = e.remapCentre(q, dt);
         for (int a = 0; a < stride; ++a) {
             const int n = w.node[k0 + a];
             if (n < 0) continue;
@@ -152,9 +149,7 @@ void MultiField::remapVelocity(EngineView& e, double tNew, double dt)
             body.momentum[n] += momentum;
         }
     });
-    grid.forEachActiveNode([&](int n) {
-        grid.velocity[n] = grid.mass[n] > 0.0 ? Vector2(grid.momentum[n] / grid.mass[n]) : Vector2::Zero();
-    });
+    grid.velocitiesFromMomenta();
     e.sides.constrain(grid.velocity);
     bodyVelocities(e, tNew);
     bodies.correctRemapped(grid, e.rigid, tNew);

@@ -32,11 +32,7 @@ void SingleField::particlesToGrid(EngineView& e, double t)
         }
     });
     grid.collectActive();
-    // No small-mass cut-off: p_i/m_i is a weighted mean of particle velocities, exact for
-    // any m_i > 0; zeroing light nodes would put spurious strain into a rigid translation.
-    grid.forEachActiveNode([&](int n) {
-        grid.velocity[n] = grid.mass[n] > 0.0 ? Vector2(grid.momentum[n] / grid.mass[n]) : Vector2::Zero();
-    });
+    grid.velocitiesFromMomenta();
     if (driven_) driven_->constrain(grid, e.rigid, t);
     e.sides.constrain(grid.velocity);
 }
@@ -77,18 +73,14 @@ void SingleField::remapVelocity(EngineView& e, double tNew, double dt)
     grid.forEachActiveNode([&](int n) { grid.momentum[n].setZero(); });
     e.strips.forEach([&](std::size_t q) {
         const std::size_t k0 = q * stride;
-        // APIC: C_p about the position the weights were taken at (x_p^t = x_p^{t+1} - dt v_p,
-        // v_p being the nodal velocity the particle moved with).
-        const Vector2 xp = p.carries(FieldGroup::affine) ? Vector2(p.x[q] - dt * p.v[q]) : p.x[q];
+        const Vector2 xp = e.remapCentre(q, dt);
         for (int a = 0; a < stride; ++a) {
             const int n = w.node[k0 + a];
             if (n < 0) continue;
             grid.momentum[n] += (w.N[k0 + a] * p.m[q]) * e.carriedVelocity(q, n, xp);
         }
     });
-    grid.forEachActiveNode([&](int n) {
-        grid.velocity[n] = grid.mass[n] > 0.0 ? Vector2(grid.momentum[n] / grid.mass[n]) : Vector2::Zero();
-    });
+    grid.velocitiesFromMomenta();
     if (driven_) driven_->constrain(grid, e.rigid, tNew);
     e.sides.constrain(grid.velocity);
 }

@@ -11,7 +11,6 @@ AppliedLoads::AppliedLoads(std::vector<std::unique_ptr<ParticleLoad>> loads, con
 
 void AppliedLoads::at(StepPoint, EngineView& e, double)
 {
-    auto timer = e.timers.time("loads");
     const Particles& p = e.particles;
     std::fill(force_.begin(), force_.end(), Vector2::Zero());
     for (const auto& load : loads_) load->addForces(e.time, p, force_);

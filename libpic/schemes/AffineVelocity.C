@@ -44,7 +44,7 @@ void AffineVelocity::at(StepPoint, EngineView& e, double dt)
     parallelFor(nParticles, [&](long q) {
         if (e.isRigid(static_cast<std::size_t>(q))) return;
         const std::vector<Vector2>& velocity = e.coupling.velocity(e.grid, e.coupling.fieldOf(p.body[q]));
-        form(p, e.weights, static_cast<std::size_t>(q), velocity, p.x[q] - dt * p.v[q]);
+        form(p, e.weights, static_cast<std::size_t>(q), velocity, e.remapCentre(static_cast<std::size_t>(q), dt));
     });
 }
 
