@@ -70,3 +70,8 @@ add_test(NAME benchQuick
          COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/scripts/benchQuick.sh
                  ${PROJECT_SOURCE_DIR} ${PROJECT_BINARY_DIR})
 set_tests_properties(benchQuick PROPERTIES TIMEOUT 600 LABELS integration)
+
+# Mass scaling against the unscaled run on the seed's anchor (tests/scripts/massScaling.sh).
+add_test(NAME massScalingAnchor
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/scripts/massScaling.sh ${PROJECT_SOURCE_DIR} ${PROJECT_BINARY_DIR})
+set_tests_properties(massScalingAnchor PROPERTIES TIMEOUT 600 LABELS integration)

@@ -21,14 +21,15 @@ void MultiField::particlesToGrid(EngineView& e, double t)
     e.strips.forEach([&](std::size_t q) {
         const std::size_t k0 = q * stride;
         BodyField& body = bodies.field(p.body[q]);
+        const double m = e.inertialMass(q);  // m_p, or scaled (MassScaling.H)
         for (int a = 0; a < stride; ++a) {
             const int n = w.node[k0 + a];
             const double N = w.N[k0 + a];
             if (n < 0) continue;
             grid.markActive(n);  // also at N = 0: its gradient may still carry force
             // The body's own field, from its particles only (seed G.4 step 1).
-            body.mass[n] += N * p.m[q];
-            body.momentum[n] += (N * p.m[q]) * e.carriedVelocity(q, n, p.x[q]);
+            body.mass[n] += N * m;
+            body.momentum[n] += (N * m) * e.carriedVelocity(q, n, p.x[q]);
         }
     });
     grid.collectActive();
@@ -141,10 +142,11 @@ void MultiField::remapVelocity(EngineView& e, double tNew, double dt)
         const std::size_t k0 = q * stride;
         BodyField& body = bodies.field(p.body[q]);
         const Vector2 xp = e.remapCentre(q, dt);
+        const double m = e.inertialMass(q);
         for (int a = 0; a < stride; ++a) {
             const int n = w.node[k0 + a];
             if (n < 0) continue;
-            const Vector2 momentum = (w.N[k0 + a] * p.m[q]) * e.carriedVelocity(q, n, xp);
+            const Vector2 momentum = (w.N[k0 + a] * m) * e.carriedVelocity(q, n, xp);
             grid.momentum[n] += momentum;
             body.momentum[n] += momentum;
         }

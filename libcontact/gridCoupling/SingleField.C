@@ -20,15 +20,16 @@ void SingleField::particlesToGrid(EngineView& e, double t)
     e.strips.forEach([&](std::size_t q) {
         const std::size_t k0 = q * stride;
         const bool rigidParticle = driven_ && e.rigid[p.body[q]];
+        const double m = e.inertialMass(q);  // m_p, or scaled (MassScaling.H)
         for (int a = 0; a < stride; ++a) {
             const int n = w.node[k0 + a];
             const double N = w.N[k0 + a];
             if (n < 0) continue;
             grid.markActive(n);  // also at N = 0: its gradient may still carry force
             const Vector2 v = e.carriedVelocity(q, n, p.x[q]);  // APIC: v_p + C_p (x_i - x_p)
-            if (rigidParticle) driven_->add(n, p.body[q], N, N * p.m[q], v);
-            grid.mass[n] += N * p.m[q];             // lumped mass, row sums of eq. 2.3.7
-            grid.momentum[n] += (N * p.m[q]) * v;  // eq. 2.4.1
+            if (rigidParticle) driven_->add(n, p.body[q], N, N * m, v);
+            grid.mass[n] += N * m;             // lumped mass, row sums of eq. 2.3.7
+            grid.momentum[n] += (N * m) * v;  // eq. 2.4.1
         }
     });
     grid.collectActive();
@@ -74,10 +75,11 @@ void SingleField::remapVelocity(EngineView& e, double tNew, double dt)
     e.strips.forEach([&](std::size_t q) {
         const std::size_t k0 = q * stride;
         const Vector2 xp = e.remapCentre(q, dt);
+        const double m = e.inertialMass(q);
         for (int a = 0; a < stride; ++a) {
             const int n = w.node[k0 + a];
             if (n < 0) continue;
-            grid.momentum[n] += (w.N[k0 + a] * p.m[q]) * e.carriedVelocity(q, n, xp);
+            grid.momentum[n] += (w.N[k0 + a] * m) * e.carriedVelocity(q, n, xp);
         }
     });
     grid.velocitiesFromMomenta();

@@ -137,6 +137,8 @@ std::unique_ptr<Case> readCase(const RunOptions& options)
     c.gravity = readGravity(dir);
     in.gravity = c.gravity;
     in.damping = damping;
+    in.massScaling = MassScaling::read(controlDict, c.timeControl->courant(), MassScaling());
+    const MassScaling massScaling = in.massScaling;  // the stages' default
     if (polar) in.rotationSides = readRotationSides(c.gridDict, mirrorSides(in.boundaries));
     std::optional<Dictionary> rigidBodiesDict;  // kept for the stages' drivers
     if (hasFile(dir, "constant/rigidBodies")) {
@@ -146,6 +148,7 @@ std::unique_ptr<Case> readCase(const RunOptions& options)
     }
     c.hasLoads = hasFile(dir, "constant/loads");
     if (c.hasLoads) in.loads = readLoads(readCaseFile(dir, "constant/loads"));
+    massScaling.refuseLoads(controlDict, c.hasLoads);
     in.bodyNames = bodyNames;
     if (hasFile(dir, "constant/contactProperties")) {
         const Dictionary contactDict = readCaseFile(dir, "constant/contactProperties");
@@ -168,6 +171,9 @@ std::unique_ptr<Case> readCase(const RunOptions& options)
         setup.cellHeight = solver.grid().cellSize().y();
         setup.gridMin = solver.grid().origin();
         setup.gridMax = solver.grid().upper();
+        setup.massScaling = massScaling;
+        setup.courant = c.timeControl->courant();
+        setup.hasLoads = c.hasLoads;
         c.stages = std::make_unique<StageSequence>(*stagesDict, std::move(setup), dir);
         if (c.hasLoads && c.stages->changesParticles())
             controlDict.fail("stages", "the loads of constant/loads hold particle indices: with loads no stage may "

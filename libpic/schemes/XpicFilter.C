@@ -45,13 +45,14 @@ void XpicFilter::at(StepPoint, EngineView& e, double dt)
             std::vector<Vector2>& next = scratch_[2 * f + 1];
             const std::size_t k0 = q * stride;
             Vector2 vq = Vector2::Zero();
+            const double m = e.inertialMass(q);
             for (int c = 0; c < stride; ++c) {
                 const int n = weights.node[k0 + c];
                 if (n >= 0) vq += weights.N[k0 + c] * w[n];
             }
             for (int c = 0; c < stride; ++c) {
                 const int n = weights.node[k0 + c];
-                if (n >= 0) next[n] += (weights.N[k0 + c] * p.m[q]) * vq;
+                if (n >= 0) next[n] += (weights.N[k0 + c] * m) * vq;
             }
         });
         for (int f = 0; f < nFields; ++f) {

@@ -63,11 +63,15 @@ void CosseratRotation::setUpParticles(Particles& p)
 }
 
 double CosseratRotation::timeStep(const std::vector<std::unique_ptr<Material>>& materials,
-                                  const std::vector<char>& deforms, double minCellSize) const
+                                  const std::vector<char>& deforms, double minCellSize,
+                                  const std::vector<double>& massScale) const
 {
     double dt = 1e300;
     for (std::size_t m = 0; m < materials.size(); ++m)
-        if (deforms[m] && materials[m]->needsRotation()) dt = std::min(dt, materials[m]->rotationalTimeStep(minCellSize));
+        if (deforms[m] && materials[m]->needsRotation()) {
+            const double step = materials[m]->rotationalTimeStep(minCellSize);
+            dt = std::min(dt, massScale.empty() ? step : step * std::sqrt(massScale[m]));
+        }
     return dt;
 }
 
@@ -85,7 +89,7 @@ void CosseratRotation::spinToGrid(EngineView& e, bool withInertia)
     const int stride = weights.stride;
     e.strips.forEach([&](std::size_t q) {
         if (!isPolar(e, q)) return;
-        const double mJ = p.m[q] * r.materialJ[static_cast<std::size_t>(p.material[q])];
+        const double mJ = e.inertialMass(q) * r.materialJ[static_cast<std::size_t>(p.material[q])];
         const std::size_t k0 = q * stride;
         for (int a = 0; a < stride; ++a) {
             const int n = weights.node[k0 + a];

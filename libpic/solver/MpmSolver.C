@@ -60,6 +60,7 @@ MpmSolver::MpmSolver(SolverInputs in)
     // arrays the rigid bodies.
     gravity_ = in.gravity;
     damping_ = in.damping;
+    setMassScaling(in.massScaling);
     if (in.transfer) useTransfer(std::move(in.transfer));
     if (in.cellMeanDilatation) cellMean_ = std::make_unique<CellMeanDilatation>();
     time_ = in.time;
@@ -93,8 +94,9 @@ const std::vector<Vector2>& MpmSolver::affineCentres() const
 
 EngineView MpmSolver::view()
 {
-    return EngineView{grid_,    particles_, weights_, strips_,       sides_,        rigid_,  *coupling_, *transfer_,
-                      gravity_, time_,      damping_, minNodalMass_, affineCentres(), timers_};
+    return EngineView{grid_,    particles_, weights_, strips_,       sides_,      rigid_,          *coupling_,
+                      *transfer_, gravity_,  time_,    damping_,      minNodalMass_, massScale_, affineCentres(),
+                      timers_};
 }
 
 void MpmSolver::enableRotation()
@@ -150,7 +152,21 @@ const CosseratField& MpmSolver::rotationField() const
 
 double MpmSolver::rotationalTimeStep() const
 {
-    return rotation_ ? rotation_->timeStep(materials_, materialDeforms_, grid_.minCellSize()) : 1e300;
+    return rotation_ ? rotation_->timeStep(materials_, materialDeforms_, grid_.minCellSize(), massScale_) : 1e300;
+}
+
+void MpmSolver::setMassScaling(const MassScaling& scaling)
+{
+    massScaling_ = scaling;
+    massScale_.clear();
+    if (!scaling.active()) return;
+    const double h = grid_.minCellSize();
+    for (const auto& m : materials_) {
+        const double c = m->waveSpeed();
+        double stable = c > 0 ? h / c : 1e300;
+        if (m->needsRotation()) stable = std::min(stable, m->rotationalTimeStep(h));
+        massScale_.push_back(scaling.scaleFor(stable));
+    }
 }
 
 void MpmSolver::setUpParticles()
@@ -473,8 +489,14 @@ double MpmSolver::maxWaveSpeed() const
 {
     double c = 0;
     for (std::size_t m = 0; m < materials_.size(); ++m)
-        if (materialDeforms_[m]) c = std::max(c, materials_[m]->waveSpeed());
+        if (materialDeforms_[m]) c = std::max(c, waveSpeed(m));
     return c;
+}
+
+double MpmSolver::waveSpeed(std::size_t m) const
+{
+    const double c = materials_[m]->waveSpeed();
+    return massScale_.empty() ? c : c / std::sqrt(massScale_[m]);  // c = sqrt(M / (s rho))
 }
 
 double MpmSolver::bytesPerParticle() const

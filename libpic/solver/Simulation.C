@@ -75,6 +75,37 @@ void Simulation::restartGuard()
     guard_ = std::make_unique<StabilityGuard>(case_->controlDict, solver_, case_->context.bodyNames, case_->stages->gravity(), case_->hasLoads);
     guard_->start(time_, step_);
     if (before) guard_->continueStatistics(*before);
+    kineticRatioWarned_ = false;
+    reportMassScaling();
+}
+
+void Simulation::reportMassScaling() const
+{
+    const std::vector<double>& scale = solver_.massScales();
+    if (scale.empty()) return;
+    log() << "Mass scaling (" << solver_.massScaling().describe() << "): density of";
+    for (std::size_t m = 0; m < scale.size(); ++m)
+        log() << (m ? ", " : " ") << solver_.materials()[m]->name() << " x " << scale[m];
+    log() << "; stable step " << solver_.criticalTimeStep() << " s, gravity on the true mass\n";
+}
+
+void Simulation::watchKineticRatio()
+{
+    if (solver_.massScales().empty()) return;
+    // The start of a stage sets the material moving before it has done much work: the
+    // ratio means something once the stage is under way.
+    constexpr long startSteps = 100;
+    const double work = guard_->workDoneSinceStart();
+    if (guard_->checksSinceStart() < startSteps || !(work > 0)) return;
+    const double ratio = guard_->kineticEnergy() / work;
+    largestKineticRatio_ = std::max(largestKineticRatio_, ratio);
+    const double bound = solver_.massScaling().kineticRatio();
+    if (ratio > bound && !kineticRatioWarned_) {
+        kineticRatioWarned_ = true;
+        std::cerr << "Warning: at t = " << time_ << " s (step " << step_ << ") the kinetic energy is " << 100 * ratio
+                  << " % of the work done on the material in the stage (kineticRatio " << bound
+                  << "): the mass scaling makes inertia count; use a smaller factor or timeStep\n";
+    }
 }
 
 void Simulation::writeState(const Particles& particles, double time, long step, double deltaT,
@@ -284,8 +315,12 @@ void Simulation::startParts()
 {
     if (case_->stages) case_->stages->start(solver_, time_, step_);  // begins a stage, or carries one on
     for (auto& f : case_->functions) f->start(solver_, time_);
-    if (case_->stages) restartGuard();
-    else guard_->start(time_, step_);
+    if (case_->stages) {
+        restartGuard();
+    } else {
+        guard_->start(time_, step_);
+        reportMassScaling();
+    }
 }
 
 bool Simulation::finished() const
@@ -321,6 +356,7 @@ void Simulation::checkStep()
         trip = guard_->check(time_, step_, deltaT_);
     }
     if (trip) stop(trip, "");
+    watchKineticRatio();
 }
 
 StageEvent Simulation::afterStep()
@@ -380,6 +416,9 @@ void Simulation::reportEnd(double wall, long steps)
     log() << guard_->snapshots() << " copies of the last good state, "
           << (guard_->snapshots() > 0 ? 1e3 * guard_->snapshotSeconds() / guard_->snapshots() : 0.0)
           << " ms each\n";
+    if (!solver_.massScales().empty() || largestKineticRatio_ > 0)
+        log() << "Mass scaling: kinetic energy at most " << 100 * largestKineticRatio_
+              << " % of the work done on the material in its stage (past each stage's first steps)\n";
     if (solver_.wallReturns() > 0)
         log() << "Walls: " << solver_.wallReturns()
               << " particle positions put back on a wall side they had passed by less than half a cell\n";

@@ -72,6 +72,8 @@ StabilityGuard::Survey StabilityGuard::survey() const
     std::size_t invalid = n, outside = n;
     double kinetic = 0, work = 0, gravity = 0, speed2 = 0;
     const bool affine = p.carries(FieldGroup::affine);
+    // With mass scaling the energy of the scaled inertia: the account of the system stepped.
+    const std::vector<double>& scale = solver_.massScales();
     const long long count = static_cast<long long>(n);
     // Threads only where they pay: a parallel region costs microseconds.
 #pragma omp parallel for if (count > parallelFrom) schedule(static) reduction(min : invalid, outside) \
@@ -89,8 +91,9 @@ StabilityGuard::Survey StabilityGuard::survey() const
         const double v2 = v.squaredNorm();
         speed2 = std::max(speed2, v2);
         if (!rigidBody || p.body[q] >= bodies || !rigidBody[p.body[q]]) {
-            kinetic += 0.5 * p.m[q] * v2;
-            if (affine) kinetic += p.affineEnergy[q];  // APIC: the part C_p carries
+            const double s = scale.empty() ? 1.0 : scale[static_cast<std::size_t>(p.material[q])];
+            kinetic += 0.5 * s * p.m[q] * v2;
+            if (affine) kinetic += s * p.affineEnergy[q];  // APIC: the part C_p carries
             work += p.work[q];
             gravity += p.m[q] * g.dot(x);  // differences only: the work of gravity
         }
@@ -144,8 +147,10 @@ double StabilityGuard::rigidWork(double t, double dt) const
 void StabilityGuard::start(double t, long step)
 {
     const Survey s = survey();
-    kinetic0_ = s.kinetic;
+    kinetic0_ = lastKinetic_ = s.kinetic;
     work0_ = s.work;
+    workDone_ = 0;
+    checks_ = 0;
     gravity0_ = gravityPrevious_ = s.gravity;
     externalWork_ = 0;
     createdBefore_ = created_ = 0;
@@ -193,6 +198,8 @@ void StabilityGuard::keep(double t, long step, double dt)
 std::optional<StabilityTrip> StabilityGuard::check(double t, long step, double dt)
 {
     const Survey s = survey();
+    lastKinetic_ = s.kinetic;
+    ++checks_;
     const std::size_t n = solver_.particles().size();
     // The limit the next step would meet: exactly MpmSolver::criticalTimeStep().
     const double h = solver_.grid().minCellSize(), c = solver_.maxWaveSpeed(), vMax = std::sqrt(s.speed2);
@@ -224,7 +231,9 @@ std::optional<StabilityTrip> StabilityGuard::check(double t, long step, double d
     } else {
         const double external = loadWork(dt) + rigidWork(t, dt);
         externalWork_ += external;
-        budget_ += std::abs(s.gravity - gravityPrevious_) + std::abs(external);
+        const double done = std::abs(s.gravity - gravityPrevious_) + std::abs(external);
+        budget_ += done;
+        workDone_ += done;
         gravityPrevious_ = s.gravity;
     }
     const double created = createdBefore_ + (s.kinetic - kinetic0_) + (s.work - work0_) - (s.gravity - gravity0_) -
@@ -238,7 +247,7 @@ std::optional<StabilityTrip> StabilityGuard::check(double t, long step, double d
         std::size_t worst = 0;
         double most = -1;
         for (std::size_t q = 0; q < n; ++q) {
-            const double k = isRigid(q) ? -1.0 : p.m[q] * p.v[q].squaredNorm();
+            const double k = isRigid(q) ? -1.0 : solver_.massScaleOf(q) * p.m[q] * p.v[q].squaredNorm();
             if (k > most) most = k, worst = q;
         }
         std::ostringstream what;
@@ -277,7 +286,7 @@ std::optional<StabilityTrip> StabilityGuard::diagnose(double t, long step, doubl
 double StabilityGuard::neededStep(std::size_t q, const Vector2& v) const
 {
     const Particles& p = solver_.particles();
-    const double c = isRigid(q) ? 0.0 : solver_.materials()[static_cast<std::size_t>(p.material[q])]->waveSpeed();
+    const double c = isRigid(q) ? 0.0 : solver_.waveSpeed(static_cast<std::size_t>(p.material[q]));
     return courant_ * solver_.grid().minCellSize() / (c + v.norm());
 }
 
@@ -298,7 +307,7 @@ std::string StabilityGuard::describe(const std::string& what, std::size_t q, dou
             speedNote = " at its last good speed";
         }
     }
-    const double c = isRigid(q) ? 0.0 : material.waveSpeed();
+    const double c = isRigid(q) ? 0.0 : solver_.waveSpeed(static_cast<std::size_t>(p.material[q]));
     std::ostringstream os;
     os << what << " at time " << t << " s (step " << step << "): particle " << p.id[q] << " of body '" << body
        << "' (material '" << material.name() << "') at " << str(p.x[q]) << " m, velocity " << str(p.v[q])

@@ -41,6 +41,8 @@ Stage::Stage(const Dictionary& dict, const StageSetup& setup, double defaultDamp
                                            "0 <= damping < 1 (eq. 3.3.5)")
                                      : defaultDamping;
     gravityOn_ = dict.getOrDefault<bool>("gravity", true);
+    massScaling_ = MassScaling::read(dict, setup.courant, setup.massScaling);
+    if (dict.found("massScaling")) massScaling_.refuseLoads(dict, setup.hasLoads);
 
     active_.assign(nBodies, dict.found("bodies") ? 0 : 1);
     if (dict.found("bodies")) {
@@ -113,6 +115,7 @@ std::string Stage::bodyList() const
 void Stage::configure(MpmSolver& solver, double t0)
 {
     solver.setDamping(damping_);
+    solver.setMassScaling(massScaling_);
     solver.setGravity(gravity());
     for (int s = 0; s < 4; ++s) {
         BoundaryCondition& bc = solver.boundary(static_cast<GridSide>(s));
