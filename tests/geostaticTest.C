@@ -6,40 +6,12 @@
 // column to that state, and picInit's geostatic initial stress holding it there.
 #include "io/ParticlesVtk.H"
 #include "support/CaseRunner.H"
-
-#include <cmath>
+#include "support/GeostaticColumn.H"
 
 using namespace gpic::test;
+using namespace gpic::test::column;
 
 namespace {
-
-const double rho = 2000, g = 9.81, H = 2.0, nu = 0.3, K0 = nu / (1 - nu);
-
-void writeColumnCase(const fs::path& dir, double E, double damping, double endTime, bool geostaticStart,
-                     const std::string& shape)
-{
-    fs::create_directories(dir / "system");
-    fs::create_directories(dir / "constant");
-    std::ofstream(dir / "system/controlDict")
-        << "endTime " << endTime << ";\ndeltaT 1;\nadjustTimeStep yes;\nmaxCourant 0.5;\n"
-        << "writeControl adjustableRunTime;\nwriteInterval " << endTime << ";\ndamping " << damping
-        << ";\n";
-    std::ofstream(dir / "system/mpmSchemes") << "shapeFunction " << shape << ";\n";
-    std::ofstream(dir / "constant/grid")
-        << "origin (0 0);\ncellSize 0.1;\nnCells (10 22);\n"
-        << "boundaries { left { type slip; } right { type slip; } bottom { type fixed; } "
-           "top { type free; } }\n";
-    std::ofstream(dir / "constant/materials")
-        << "soil { type linearElastic; rho " << rho << "; E " << E << "; nu " << nu << "; }\n";
-    std::ofstream(dir / "constant/g") << "value (0 " << -g << ");\n";
-    std::ofstream(dir / "constant/bodies")
-        << "column { material soil; particlesPerCell 2; shape { type rectangle; min (0 0); max (1 "
-        << H << "); }\n"
-        << (geostaticStart ? "initialStress { type geostatic; K0 " + std::to_string(K0) +
-                                 "; surface " + std::to_string(H) + "; }\n"
-                           : "")
-        << "}\n";
-}
 
 struct ColumnResult {
     double stressError;  //- max |sigma - geostatic| / (rho g H) over sigma11, sigma22
@@ -51,17 +23,9 @@ ColumnResult runColumn(double E, double damping, double endTime, bool geostaticS
 {
     ScratchDir scratch("column");
     const fs::path dir = scratch.path() / "column";
-    writeColumnCase(dir, E, damping, endTime, geostaticStart, shape);
+    column::write(dir, E, damping, endTime, geostaticStart, shape);
     const auto simulation = runAndKeep(dir);
-    const gpic::Particles& p = simulation->solver().particles();
-    ColumnResult r{0, simulation->solver().maxParticleSpeed()};
-    for (std::size_t q = 0; q < p.size(); ++q) {
-        const double s22 = -rho * g * (H - p.x0[q].y());
-        r.stressError = std::max({r.stressError, std::abs(p.sigma[q][gpic::YY] - s22),
-                                  std::abs(p.sigma[q][gpic::XX] - K0 * s22)});
-    }
-    r.stressError /= rho * g * H;
-    return r;
+    return ColumnResult{stressError(simulation->solver().particles()), simulation->solver().maxParticleSpeed()};
 }
 
 } // namespace
@@ -107,7 +71,7 @@ TEST(GeostaticColumn, jakyInitialStressFromTheFrictionAngle)
     // (1 - sin 30) sigma22 = sigma22 / 2 (eqs. 3.3.3, 3.3.4), top = upper edge of the shape.
     ScratchDir scratch("jaky");
     const fs::path dir = scratch.path() / "column";
-    writeColumnCase(dir, 1e6, 0.0, 0.1, false, "bilinear");
+    column::write(dir, 1e6, 0.0, 0.1, false, "bilinear");
     replaceText(dir / "constant/bodies", "particlesPerCell 2;",
                 "particlesPerCell 2; initialStress { type geostatic; phi 30; }");
     gpic::initialiseCase(dir.string());

@@ -4,12 +4,7 @@
 # 2 % of the unscaled run, in at least 8 times fewer steps (the settle stage's 100 steps
 # are a floor in both).
 # Usage: massScaling.sh <source dir> <binary dir>
-set -euo pipefail
-source_dir=$1 binary_dir=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-export GPIC_DIR=$source_dir
-export PATH=$binary_dir/bin:$PATH
+. "$(dirname "$0")/scratchRun.sh" "$@"
 cp -r "$source_dir/tutorials/geotechnics/anchors" "$work/case"
 cd "$work/case"
 entry=vertical:3:3:rough:2

@@ -3,12 +3,7 @@
 # their ladders and write a report with the summary, each ladder's table of reference, ours,
 # errors, particles, steps and wall time, and the error-against-wall-time plots.
 # Usage: validationReport.sh <source dir> <binary dir>
-set -euo pipefail
-source_dir=$1 binary_dir=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-export GPIC_DIR=$source_dir
-export PATH=$binary_dir/bin:$PATH
+. "$(dirname "$0")/scratchRun.sh" "$@"
 mkdir -p "$work/tutorials/verification" "$work/tutorials/materials"
 cp "$source_dir/tutorials/Allvalidate" "$work/tutorials/"
 cp -r "$source_dir/tutorials/verification/elasticBar" "$work/tutorials/verification/"
