@@ -54,6 +54,7 @@ Simulation::Simulation(const RunOptions& options)
     guard_ = std::make_unique<StabilityGuard>(case_->controlDict, solver_, case_->context.bodyNames, case_->gravity,
                                               case_->hasLoads);
     onDisk_ = {time_, step_, case_->context.startTimeName};
+    if (options_.tuneThreads && threadCount() > 1) tuner_ = std::make_unique<ThreadTuner>(threadCount());
     // Every keyword has been read by now: what is left is a typo or a leftover.
     case_->warnUnused();
 
@@ -275,8 +276,10 @@ long Simulation::run()
     const StopSignals stopSignals;  // SIGINT, SIGTERM: finish the step, write it, stop
     while (!finished()) {
         const double tPrevious = time_;
+        const auto stepStart = Clock::now();
         takeStep();
         checkStep();
+        if (tuner_) tuner_->stepTook(std::chrono::duration<double>(Clock::now() - stepStart).count());
         const StageEvent stage = afterStep();
         // The end of every stage is written: a restart from it begins the next stage.
         writtenLast = case_->timeControl->isWriteTime(tPrevious, time_, step_) || stage == StageEvent::ended;
@@ -407,7 +410,10 @@ void Simulation::reportEnd(double wall, long steps)
     log() << "End: t = " << time_ << ", " << steps << " steps, " << solver_.particles().size()
           << " particles, wall " << wall << " s, "
           << (wall > 0 ? double(steps) * solver_.particles().size() / wall : 0.0)
-          << " particle-updates/s, threads " << threadCount() << ", peak memory " << peakMemoryMiB()
+          << " particle-updates/s, threads "
+          << (tuner_ ? std::to_string(tuner_->mostUsed()) + " (chosen by measuring: " + tuner_->summary() + ")"
+                     : std::to_string(threadCount()))
+          << ", peak memory " << peakMemoryMiB()
           << " MiB, " << solver_.bytesPerParticle() << " B/particle\n";
     log() << "Stability guard: ";
     if (guard_->energyChecked())

@@ -3,6 +3,8 @@
 #include "applicationMain.H"
 #include "solver/Simulation.H"
 
+#include <cstdlib>
+
 int main(int argc, char** argv)
 {
     namespace po = boost::program_options;
@@ -16,6 +18,8 @@ int main(int argc, char** argv)
             run.caseDir = vm["case"].as<std::string>();
             if (vm.count("time")) run.startTime = vm["time"].as<double>();
             run.quiet = vm.count("quiet") > 0;
+            // OMP_NUM_THREADS fixes the count; without it the run measures which count is faster.
+            run.tuneThreads = std::getenv("OMP_NUM_THREADS") == nullptr;
             gpic::Simulation simulation(run);
             simulation.run();
         });
