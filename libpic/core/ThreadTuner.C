@@ -1,13 +1,14 @@
 #include "core/ThreadTuner.H"
 
+#include <dirent.h>
+
 #include <algorithm>
 #include <chrono>
-#include <thread>
 #include <cmath>
-#include <dirent.h>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <thread>
 
 #ifdef _OPENMP
 #include <omp.h>
