@@ -85,9 +85,13 @@ void Simulation::reportMassScaling() const
     const std::vector<double>& scale = solver_.massScales();
     if (scale.empty()) return;
     log() << "Mass scaling (" << solver_.massScaling().describe() << "): density of";
+    const char* separator = " ";
     for (std::size_t m = 0; m < scale.size(); ++m)
-        log() << (m ? ", " : " ") << solver_.materials()[m]->name() << " x " << scale[m];
-    log() << "; stable step " << solver_.criticalTimeStep() << " s, gravity on the true mass\n";
+        if (solver_.deforms(m)) {
+            log() << separator << solver_.materials()[m]->name() << " x " << scale[m];
+            separator = ", ";
+        }
+    log() << "; stable step " << solver_.criticalTimeStep() << " s; rigid bodies and gravity keep the true mass\n";
 }
 
 void Simulation::watchKineticRatio()
