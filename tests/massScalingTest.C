@@ -139,3 +139,24 @@ TEST(MassScaling, badEntriesNameTheKeyword)
         EXPECT_NE(std::string(e.what()).find("applied loads"), std::string::npos) << e.what();
     }
 }
+
+TEST(MassScaling, aStageMayScaleAndTheNextNot)
+{
+    // The column settles scaled 100 times, then goes on unscaled: the settled stress holds,
+    // and each stage takes the steps of its own stable step.
+    ScratchDir scratch("massScalingStages");
+    const auto plain = columnEngine(scratch.path() / "plain", "");
+    const double dt = 0.5 * plain->solver().criticalTimeStep();  // maxCourant 0.5, unscaled
+    const fs::path dir = scratch.path() / "column";
+    writeColumn(dir, "", 1);
+    std::ofstream(dir / "system/controlDict")
+        << "deltaT 1;\nadjustTimeStep yes;\nmaxCourant 0.5;\nwriteControl adjustableRunTime;\nwriteInterval 100;\n"
+        << "stages {\n  settle { type run; damping 0.8; massScaling { factor 100; } until { duration 15; } }\n"
+        << "  go { type run; damping 0.8; until { duration 0.1; } }\n}\n";
+    const auto simulation = initialisedSimulation(dir);
+    const long steps = simulation->run();
+    EXPECT_TRUE(simulation->solver().massScales().empty());  // the last stage is unscaled
+    EXPECT_LT(column::stressError(simulation->solver().particles()), 0.03);
+    const double expected = 15 / (10 * dt) + 0.1 / dt;
+    EXPECT_NEAR(double(steps) / expected, 1.0, 0.05) << steps << " steps, " << expected << " expected";
+}
