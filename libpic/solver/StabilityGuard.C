@@ -91,7 +91,7 @@ StabilityGuard::Survey StabilityGuard::survey() const
         const double v2 = v.squaredNorm();
         speed2 = std::max(speed2, v2);
         if (!rigidBody || p.body[q] >= bodies || !rigidBody[p.body[q]]) {
-            const double s = scale.empty() ? 1.0 : scale[static_cast<std::size_t>(p.material[q])];
+            const double s = inertiaScale(scale, p, q, false);
             kinetic += 0.5 * s * p.m[q] * v2;
             if (affine) kinetic += s * p.affineEnergy[q];  // APIC: the part C_p carries
             work += p.work[q];
