@@ -370,6 +370,8 @@ TEST(StabilityGuard, nanStressFromAMaterialIsCaughtAtItsStepNamingParticleAndMat
         const Particles good = readState(d.goodDir);
         EXPECT_TRUE(allFinite(good));
         EXPECT_NEAR(d.goodTime, 20 * dt, 1e-12);
+        // The state of step 20 came from the guard's snapshot file, which goes with the run.
+        EXPECT_FALSE(fs::exists(dir / ".lastGoodState.vtp"));
     }
 }
 

@@ -52,7 +52,7 @@ Simulation::Simulation(const RunOptions& options)
       timeDigits_(case_->timeControl->timePrecision())
 {
     guard_ = std::make_unique<StabilityGuard>(case_->controlDict, solver_, case_->context.bodyNames, case_->gravity,
-                                              case_->hasLoads);
+                                              case_->hasLoads, snapshotFile());
     onDisk_ = {time_, step_, case_->context.startTimeName};
     if (options_.tuneThreads && threadCount() > 1) tuner_ = std::make_unique<ThreadTuner>(threadCount());
     // Every keyword has been read by now: what is left is a typo or a leftover.
@@ -66,14 +66,22 @@ Simulation::Simulation(const RunOptions& options)
               << contact->summary() << "\n";
 }
 
-Simulation::~Simulation() = default;
+Simulation::~Simulation()
+{
+    // The run's own last good state; a stopped run has written it as a time directory.
+    std::error_code ec;
+    fs::remove(snapshotFile(), ec);
+}
+
+std::string Simulation::snapshotFile() const { return (fs::path(options_.caseDir) / ".lastGoodState.vtp").string(); }
 
 std::ostream& Simulation::log() const { return info(); }
 
 void Simulation::restartGuard()
 {
     auto before = std::move(guard_);
-    guard_ = std::make_unique<StabilityGuard>(case_->controlDict, solver_, case_->context.bodyNames, case_->stages->gravity(), case_->hasLoads);
+    guard_ = std::make_unique<StabilityGuard>(case_->controlDict, solver_, case_->context.bodyNames,
+                                              case_->stages->gravity(), case_->hasLoads, snapshotFile());
     guard_->start(time_, step_);
     if (before) guard_->continueStatistics(*before);
     kineticRatioWarned_ = false;
@@ -212,6 +220,7 @@ void Simulation::write()
     const std::string& dir = options_.caseDir;
     writeState(solver_.particles(), time_, step_, deltaT_, solver_.removedMass(), name);
     onDisk_ = {time_, step_, name};
+    guard_->stateWritten((fs::path(dir) / name / "particles.vtp").string(), time_, step_, deltaT_);
     PvdCollection pvd(pvdPath(dir));
     pvd.add(time_, name + "/particles.vtp", 0);
     if (case_->writeGrid) pvd.add(time_, name + "/grid.vti", 1);
@@ -234,7 +243,7 @@ void Simulation::stop(const std::optional<StabilityTrip>& trip, const std::strin
             if (onDisk_.step != step_) write();
         } else if (const GoodState& good = guard_->lastGood(); good.step > onDisk_.step) {
             const std::string name = timeDirectoryName(good.time);
-            writeState(good.particles, good.time, good.step, good.deltaT, good.removedMass, name);
+            writeState(good.particles(), good.time, good.step, good.deltaT, good.removedMass, name);
             PvdCollection pvd(pvdPath(options_.caseDir));
             pvd.add(good.time, name + "/particles.vtp", 0);
             if (case_->writeGrid) {
@@ -256,7 +265,7 @@ void Simulation::writeGoodStateGrid(const GoodState& good, const std::string& pa
 {
     // The run ends here: the engine may take the good state's particles to project them.
     if (!solver_.hasLoads()) {
-        solver_.replaceParticles(good.particles);
+        solver_.replaceParticles(good.particles());
         solver_.setTime(good.time);
         solver_.projectToGrid();
         writeGrid(path, solver_.grid(), good.time);
@@ -288,6 +297,10 @@ long Simulation::run()
         // The end of every stage is written: a restart from it begins the next stage.
         writtenLast = case_->timeControl->isWriteTime(tPrevious, time_, step_) || stage == StageEvent::ended;
         if (writtenLast) write();
+        if (!finished()) {  // the last step is written in any case
+            auto timer = solver_.timers().time("stabilityGuard");
+            guard_->keepIfDue(time_, step_, deltaT_);
+        }
         if (stage == StageEvent::ended) {
             case_->stages->beginNext(solver_, time_, step_);
             restartGuard();
@@ -324,8 +337,9 @@ void Simulation::startParts()
     for (auto& f : case_->functions) f->start(solver_, time_);
     if (case_->stages) {
         restartGuard();
-    } else {
-        guard_->start(time_, step_);
+    } else {  // the state read from the start directory, unchanged
+        guard_->start(time_, step_,
+                      (fs::path(options_.caseDir) / case_->context.startTimeName / "particles.vtp").string());
         reportMassScaling();
     }
 }
@@ -423,9 +437,8 @@ void Simulation::reportEnd(double wall, long steps)
     if (guard_->energyChecked())
         log() << "created energy at most " << 100 * guard_->largestEnergyGain() << " % of the budget (stops at "
               << 100 * guard_->maxEnergyGain() << " %), ";
-    log() << guard_->snapshots() << " copies of the last good state, "
-          << (guard_->snapshots() > 0 ? 1e3 * guard_->snapshotSeconds() / guard_->snapshots() : 0.0)
-          << " ms each\n";
+    log() << guard_->snapshots() << " last good states kept (" << guard_->snapshotSeconds()
+          << " s writing those not in a time directory)\n";
     if (!solver_.massScales().empty() || largestKineticRatio_ > 0)
         log() << "Mass scaling: kinetic energy at most " << 100 * largestKineticRatio_
               << " % of the work done on the material in its stage (past each stage's first steps)\n";

@@ -1,6 +1,7 @@
 #include "solver/StabilityGuard.H"
 
 #include "dictionary/Dictionary.H"
+#include "io/ParticlesVtk.H"
 #include "solver/MpmSolver.H"
 
 #include <algorithm>
@@ -26,8 +27,10 @@ constexpr long long parallelFrom = 20000;
 } // namespace
 
 StabilityGuard::StabilityGuard(const Dictionary& controlDict, const MpmSolver& solver,
-                               std::vector<std::string> bodyNames, const Vector2& gravity, bool hasLoads)
-    : solver_(solver), bodyNames_(std::move(bodyNames)), gravity_(gravity), hasLoads_(hasLoads)
+                               std::vector<std::string> bodyNames, const Vector2& gravity, bool hasLoads,
+                               std::string snapshotFile)
+    : solver_(solver), bodyNames_(std::move(bodyNames)), gravity_(gravity), hasLoads_(hasLoads),
+      snapshotFile_(std::move(snapshotFile))
 {
     Dictionary none;
     const Dictionary* found = controlDict.subDictPtr("stabilityGuard");
@@ -144,7 +147,7 @@ double StabilityGuard::rigidWork(double t, double dt) const
     return dt * w;
 }
 
-void StabilityGuard::start(double t, long step)
+void StabilityGuard::start(double t, long step, const std::string& onDisk)
 {
     const Survey s = survey();
     kinetic0_ = lastKinetic_ = s.kinetic;
@@ -178,21 +181,42 @@ void StabilityGuard::start(double t, long step)
     budget_ = s.kinetic + elastic + floor;
     // Rigid bodies alone: no material energy to account, only round-off in the bodies' loads.
     energyChecked_ = mass > 0;
-    keep(t, step, 0.0);
+    if (onDisk.empty())
+        keep(t, step, 0.0);
+    else
+        stateWritten(onDisk, t, step, 0.0);
 }
 
 void StabilityGuard::restartEnergyAccount() { restartPending_ = true; }
 
+Particles GoodState::particles() const
+{
+    Particles p;
+    double t = 0;
+    readParticles(file, p, t);
+    return p;
+}
+
 void StabilityGuard::keep(double t, long step, double dt)
 {
     const auto begin = std::chrono::steady_clock::now();
-    lastGood_.particles = solver_.particles();  // reuses the arrays' storage after the first copy
-    lastGood_.removedMass = solver_.removedMass();
-    lastGood_.time = t;
-    lastGood_.step = step;
-    lastGood_.deltaT = dt;
+    std::vector<std::string> materialNames;
+    for (const auto& m : solver_.materials()) materialNames.push_back(m->name());
+    writeParticles(snapshotFile_, solver_.particles(), t, materialNames, bodyNames_);  // atomic: tmp + rename
+    lastGood_ = {snapshotFile_, t, step, dt, solver_.removedMass()};
     ++snapshots_;
     snapshotSeconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+}
+
+void StabilityGuard::keepIfDue(double t, long step, double dt)
+{
+    if (step - lastGood_.step >= snapshotInterval_) keep(t, step, dt);
+}
+
+void StabilityGuard::stateWritten(const std::string& file, double t, long step, double dt)
+{
+    lastGood_ = {file, t, step, dt, solver_.removedMass()};
+    ++snapshots_;
 }
 
 std::optional<StabilityTrip> StabilityGuard::check(double t, long step, double dt)
@@ -270,7 +294,6 @@ std::optional<StabilityTrip> StabilityGuard::check(double t, long step, double d
         return StabilityTrip{describe(limitText(), fastest, t, step, dt), true};
     }
 
-    if (step - lastGood_.step >= snapshotInterval_) keep(t, step, dt);
     return std::nullopt;
 }
 
@@ -299,13 +322,15 @@ std::string StabilityGuard::describe(const std::string& what, std::size_t q, dou
     // A non-finite velocity says nothing of the speed: use the particle's last good one.
     Vector2 v = p.v[q];
     std::string speedNote;
-    if (!finite(v)) {
-        const Particles& good = lastGood_.particles;
+    if (!finite(v)) try {
+        const Particles good = lastGood_.particles();
         const auto at = std::find(good.id.begin(), good.id.end(), p.id[q]);
         if (at != good.id.end()) {
             v = good.v[static_cast<std::size_t>(at - good.id.begin())];
             speedNote = " at its last good speed";
         }
+    } catch (const std::exception&) {
+        // The last good state is gone (a time directory renamed since): the diagnosis goes without it.
     }
     const double c = isRigid(q) ? 0.0 : solver_.waveSpeed(static_cast<std::size_t>(p.material[q]));
     std::ostringstream os;
