@@ -109,7 +109,7 @@ FilledBodies fillBodies(const Dictionary& bodiesDict, const Grid& grid,
             for (int i = 0; i < grid.nx(); ++i)
                 for (int b = 0; b < n; ++b)
                     for (int a = 0; a < n; ++a) {
-                        const Vector2 x = grid.nodePosition(grid.node(i, j)) +
+                        const Vector2 x = grid.nodePosition(i, j) +
                                           Vector2((a + 0.5) * h.x() / n, (b + 0.5) * h.y() / n);
                         if (!shape->inside(x)) continue;
                         const std::size_t q = out.particles.add(

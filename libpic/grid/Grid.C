@@ -114,18 +114,6 @@ void Grid::collectActive()
         if (isActive_[static_cast<std::size_t>(i)]) active.push_back(i);
 }
 
-bool Grid::contains(const Vector2& x) const
-{
-    const Vector2 top = upper();
-    return x.x() >= origin_.x() && x.y() >= origin_.y() && x.x() <= top.x() && x.y() <= top.y();
-}
-
-void Grid::cellOf(const Vector2& x, int& i, int& j) const
-{
-    i = std::clamp(static_cast<int>(std::floor((x.x() - origin_.x()) / h_.x())), 0, nx_ - 1);
-    j = std::clamp(static_cast<int>(std::floor((x.y() - origin_.y()) / h_.y())), 0, ny_ - 1);
-}
-
 std::vector<int> Grid::sideNodes(GridSide side) const
 {
     std::vector<int> nodes;

@@ -15,7 +15,7 @@ void BilinearShape::evaluate(const Grid& grid, const Particles& p, ShapeWeights&
     for (long q = 0; q < n; ++q) {
         int i, j;
         grid.cellOf(p.x[q], i, j);
-        const Vector2 local = p.x[q] - grid.nodePosition(grid.node(i, j));
+        const Vector2 local = p.x[q] - grid.nodePosition(i, j);
         const double xi = local.x() / h.x(), eta = local.y() / h.y();
         const std::size_t k = q * 4;
         // Counter-clockwise from the lower-left node.

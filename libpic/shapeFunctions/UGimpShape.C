@@ -35,7 +35,7 @@ void UGimpShape::evaluate(const Grid& grid, const Particles& p, ShapeWeights& w)
     for (long q = 0; q < n; ++q) {
         int i, j;
         grid.cellOf(p.x[q], i, j);
-        const Vector2 local = p.x[q] - grid.nodePosition(grid.node(i, j));
+        const Vector2 local = p.x[q] - grid.nodePosition(i, j);
         // The three nodes whose support can reach the particle in each direction.
         const int i0 = local.x() < 0.5 * h.x() ? i - 1 : i;
         const int j0 = local.y() < 0.5 * h.y() ? j - 1 : j;
