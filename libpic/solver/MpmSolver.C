@@ -336,6 +336,7 @@ void MpmSolver::computeForces()
 
 void MpmSolver::updateGrid(double dt)
 {
+    deltaT_ = dt;
     reach(StepPoint::beforeGridUpdate, dt);
     EngineView engine = view();
     coupling_->updateGrid(engine, time_ + dt, dt);

@@ -1,0 +1,131 @@
+// The toolWear function object (Archard wear along a rigid tool's face). Physics: an elastic
+// block (60 x 30 mm, rho 1000) slides over a fixed rigid plate, the tool, under its own
+// weight W = rho g A, from v0 = 0.05 m/s. The plate's top face carries p = rho g H and the
+// block slides over it at v(t) = v0 - mu g t until it stops (Coulomb friction, mu g the
+// deceleration). Archard's local law, dh/dt = (k/H) p v, integrates to
+//     worn volume V = (k/H) W d,  d the distance slid: v0 t (mu 0) or v0^2 / (2 mu g),
+//     depth h = (k/H) p d where the block covered the face throughout.
+// The wear is also checked against the distance the block actually slid (bodyMotion), which
+// separates the wear integral from the friction law's own accuracy.
+#include "support/CaseRunner.H"
+
+#include <cmath>
+
+using namespace gpic;
+using namespace gpic::test;
+
+namespace {
+
+constexpr double g = 9.81, rho = 1000, width = 0.06, height = 0.03, v0 = 0.05, kOverH = 1e-3 / 1e6;
+
+fs::path slidingBlock(const fs::path& dir, double mu, double endTime)
+{
+    std::ostringstream control;
+    control << "endTime " << endTime << "; deltaT 1; adjustTimeStep yes; maxCourant 0.4;\n"
+            << "writeControl runTime; writeInterval " << endTime << ";\n"
+            << "functions {\n"
+               "  motion { type bodyMotion; writeInterval 50; }\n"
+               "  wear { type toolWear; body plate; wearCoefficient 1e-3; hardness 1e6; resolution 0.005;\n"
+               "         faces { top { from (0.18 0.02); to (0.02 0.02); } } writeInterval 50; }\n"
+               "}\n";
+    writeDictionary(dir / "system/controlDict", control.str());
+    writeDictionary(dir / "system/mpmSchemes", "updateScheme MUSL; shapeFunction bilinear; transfer FLIP;\n");
+    writeDictionary(dir / "constant/grid",
+                    "origin (0 0); cellSize 0.005; nCells (40 20);\n"
+                    "boundaries { left { type free; } right { type free; } bottom { type free; } top { type free; } }\n");
+    writeDictionary(dir / "constant/materials", "gel   { type linearElastic; rho 1000; E 1e6; nu 0.3; }\n"
+                                                "steel { type linearElastic; rho 7800; E 2e8; nu 0.3; }\n");
+    writeDictionary(dir / "constant/bodies",
+                    "plate { material steel; shape { type rectangle; min (0.02 0.01); max (0.18 0.02); } "
+                    "particlesPerCell 2; }\n"
+                    "block { material gel; shape { type rectangle; min (0.07 0.02); max (0.13 0.05); } "
+                    "particlesPerCell 2; velocity (0.05 0); initialStress { type geostatic; K0 0.4285714285714286; } }\n");
+    writeDictionary(dir / "constant/rigidBodies", "plate { type fixed; }\n");
+    writeDictionary(dir / "constant/g", "value (0 -9.81);\n");
+    std::ostringstream contact;
+    contact << "law coulombFriction; mu " << mu << "; normals rigidSurface; correctRemapped yes;\n";
+    writeDictionary(dir / "constant/contactProperties", contact.str());
+    return dir;
+}
+
+struct Wear {
+    double volume, maxDepth, middleDepth, slid;
+    double time;  //- of the last row (rows every 50 steps: short of endTime by up to 50 steps)
+};
+
+Wear runWear(const fs::path& dir)
+{
+    runAndKeep(dir);
+    const auto wear = readColumns(dir / "postProcessing/wear/0/wear.dat");
+    const auto motion = readColumns(dir / "postProcessing/motion/0/bodyMotion.dat");
+    const auto profile = readColumns(dir / "postProcessing/wear/0/wearProfile.dat");
+    // The middle of the face at the last row: x = 0.1 lies under the block throughout.
+    double middle = 0;
+    for (std::size_t k = 0; k < profile.at("time").size(); ++k)
+        if (profile.at("time")[k] == wear.at("time").back() && std::abs(profile.at("x")[k] - 0.1025) < 1e-9)
+            middle = profile.at("depth")[k];
+    return {wear.at("top:volume").back(), wear.at("top:maxDepth").back(), middle,
+            motion.at("block:x").back() - motion.at("block:x").front(), wear.at("time").back()};
+}
+
+} // namespace
+
+TEST(ToolWear, frictionlessSlidingWearsAsArchardAtConstantSpeed)
+{
+    ScratchDir scratch("toolWear");
+    const double endTime = 0.1;
+    const Wear w = runWear(slidingBlock(scratch.path() / "frictionless", 0.0, endTime));
+    const double W = rho * g * width * height, p = rho * g * height, d = v0 * w.time;
+    EXPECT_GT(w.time, 0.95 * endTime);
+    std::cout << "frictionless: slid " << w.slid << " m (closed form " << d << "), volume " << w.volume
+              << " (closed form " << kOverH * W * d << "), middle depth " << w.middleDepth << " (" << kOverH * p * d
+              << ")\n";
+    EXPECT_NEAR(w.slid, d, 0.01 * d);
+    EXPECT_NEAR(w.volume, kOverH * W * d, 0.01 * kOverH * W * d);
+    EXPECT_NEAR(w.middleDepth, kOverH * p * d, 0.1 * kOverH * p * d);
+    EXPECT_GE(w.maxDepth, w.middleDepth);
+}
+
+TEST(ToolWear, frictionStopsTheBlockAndTheWearWithIt)
+{
+    ScratchDir scratch("toolWear");
+    const double mu = 0.05, stop = v0 / (mu * g);  // 0.102 s
+    const Wear w = runWear(slidingBlock(scratch.path() / "frictional", mu, 1.5 * stop));
+    const double W = rho * g * width * height, d = v0 * v0 / (2 * mu * g);
+    std::cout << "mu " << mu << ": slid " << w.slid << " m (closed form " << d << "), volume " << w.volume
+              << " (closed form " << kOverH * W * d << ", from the distance slid " << kOverH * W * w.slid << ")\n";
+    EXPECT_NEAR(w.slid, d, 0.03 * d);
+    EXPECT_NEAR(w.volume, kOverH * W * w.slid, 0.02 * kOverH * W * w.slid);
+    EXPECT_NEAR(w.volume, kOverH * W * d, 0.03 * kOverH * W * d);
+}
+
+TEST(ToolWear, refusesABodyThatIsNotRigidAndASceneWithoutBodyFields)
+{
+    ScratchDir scratch("toolWear");
+    fs::path dir = slidingBlock(scratch.path() / "notRigid", 0.0, 0.001);
+    std::string control;
+    {
+        std::ifstream in(dir / "system/controlDict");
+        control.assign(std::istreambuf_iterator<char>(in), {});
+    }
+    const auto replaced = [&](const std::string& from, const std::string& to) {
+        std::string text = control;
+        text.replace(text.find(from), from.size(), to);
+        return text;
+    };
+    writeDictionary(dir / "system/controlDict", replaced("body plate;", "body block;"));
+    try {
+        runAndKeep(dir);
+        ADD_FAILURE() << "a deformable body was accepted";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("'block' is not a rigid body"), std::string::npos) << e.what();
+    }
+    dir = slidingBlock(scratch.path() / "oneField", 0.0, 0.001);
+    writeDictionary(dir / "constant/contactProperties", "law noSlip;\n");
+    try {
+        runAndKeep(dir);
+        ADD_FAILURE() << "a scene with one velocity field was accepted";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("does not slide"), std::string::npos) << e.what();
+    }
+}
