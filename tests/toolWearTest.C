@@ -7,9 +7,11 @@
 //     depth h = (k/H) p d where the block covered the face throughout.
 // The wear is also checked against the distance the block actually slid (bodyMotion), which
 // separates the wear integral from the friction law's own accuracy.
+#include "support/Applications.H"
 #include "support/CaseRunner.H"
 
 #include <cmath>
+#include <iomanip>
 
 using namespace gpic;
 using namespace gpic::test;
@@ -90,13 +92,28 @@ TEST(ToolWear, frictionStopsTheBlockAndTheWearWithIt)
 {
     ScratchDir scratch("toolWear");
     const double mu = 0.05, stop = v0 / (mu * g);  // 0.102 s
-    const Wear w = runWear(slidingBlock(scratch.path() / "frictional", mu, 1.5 * stop));
+    const fs::path dir = slidingBlock(scratch.path() / "frictional", mu, 1.5 * stop);
+    const Wear w = runWear(dir);
     const double W = rho * g * width * height, d = v0 * v0 / (2 * mu * g);
     std::cout << "mu " << mu << ": slid " << w.slid << " m (closed form " << d << "), volume " << w.volume
               << " (closed form " << kOverH * W * d << ", from the distance slid " << kOverH * W * w.slid << ")\n";
     EXPECT_NEAR(w.slid, d, 0.03 * d);
     EXPECT_NEAR(w.volume, kOverH * W * w.slid, 0.02 * kOverH * W * w.slid);
     EXPECT_NEAR(w.volume, kOverH * W * d, 0.03 * kOverH * W * d);
+
+    // picForces -wear: the last profile as CSV and its deepest point, the file's own figure.
+    const AppResult r = runApplication("picForces", dir, "-wear");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    std::ifstream csv(dir / "postProcessing/picForces/wear.csv");
+    std::string line;
+    std::getline(csv, line);
+    EXPECT_EQ(line, "face,s,x,y,depth");
+    int rows = 0;
+    while (std::getline(csv, line)) ++rows;
+    EXPECT_EQ(rows, 32);  // 0.16 m of face in 5 mm bins
+    std::ostringstream deepest;
+    deepest << "largest depth " << std::setprecision(6) << w.maxDepth << " m";
+    EXPECT_NE(r.out.find(deepest.str()), std::string::npos) << r.out;
 }
 
 TEST(ToolWear, refusesABodyThatIsNotRigidAndASceneWithoutBodyFields)

@@ -54,4 +54,17 @@ bool plotSurface(const std::string& csvPath, const std::string& pngPath, const s
     return runGnuplot(script.str(), pngPath, csvPath);
 }
 
+bool plotWear(const std::string& csvPath, const std::string& pngPath, const std::vector<std::string>& faces,
+              const std::string& title)
+{
+    std::ostringstream script;
+    script << header(pngPath) << "set title " << gnuplotQuoted(title)
+           << "\nset xlabel 'distance along the face s [m]'\nset ylabel 'wear depth [m]'\nplot ";
+    for (std::size_t k = 0; k < faces.size(); ++k)
+        script << (k ? ", \\\n     " : "") << gnuplotQuoted(csvPath) << " skip 1 using 2:($1 == " << k
+               << " ? $5 : 1/0) with linespoints pt 7 lw 2 title " << gnuplotQuoted(faces[k]);
+    script << '\n';
+    return runGnuplot(script.str(), pngPath, csvPath);
+}
+
 } // namespace gpic

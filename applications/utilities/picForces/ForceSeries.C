@@ -27,8 +27,9 @@ bool parseNumber(const std::string& word, double& value)
     return end != text && *end == '\0' && errno != ERANGE;
 }
 
-//- The latest <time>/forces.dat under a function object's output directory, or "".
-std::string latestForcesFile(const fs::path& functionDir)
+} // namespace
+
+std::string latestOutputFile(const fs::path& functionDir, const std::string& fileName)
 {
     std::error_code ec;
     double best = -HUGE_VAL;
@@ -36,15 +37,13 @@ std::string latestForcesFile(const fs::path& functionDir)
     for (const auto& e : fs::directory_iterator(functionDir, ec)) {
         double t = 0;
         if (!e.is_directory() || !parseNumber(e.path().filename().string(), t)) continue;
-        if (t > best && fs::is_regular_file(e.path() / "forces.dat")) {
+        if (t > best && fs::is_regular_file(e.path() / fileName)) {
             best = t;
-            found = (e.path() / "forces.dat").string();
+            found = (e.path() / fileName).string();
         }
     }
     return found;
 }
-
-} // namespace
 
 int ForceSeries::column(const std::string& name) const
 {
@@ -56,13 +55,13 @@ int ForceSeries::column(const std::string& name) const
 std::string defaultForcesFile(const std::string& caseDir)
 {
     const fs::path post = fs::path(caseDir) / "postProcessing";
-    const std::string preferred = latestForcesFile(post / "forces");
+    const std::string preferred = latestOutputFile(post / "forces", "forces.dat");
     if (!preferred.empty()) return preferred;
     std::vector<std::string> candidates, names;
     std::error_code ec;
     for (const auto& e : fs::directory_iterator(post, ec)) {
         if (!e.is_directory() || e.path().filename() == "picForces") continue;
-        const std::string f = latestForcesFile(e.path());
+        const std::string f = latestOutputFile(e.path(), "forces.dat");
         if (f.empty()) continue;
         candidates.push_back(f);
         names.push_back(e.path().filename().string());

@@ -3,6 +3,7 @@
 // writes postProcessing/picForces/:
 //     forces.csv, forces.png           force against time (-x time) or displacement
 //     surface_<time>.csv, .png         normal and shear stress along a tool face (-surface)
+//     wear.csv, wear.png               the toolWear function object's last wear profile (-wear)
 // and prints the time average over a window (-window t0 t1), as the seed averages the blade
 // forces over t = 2 ... 7 s (Case 4.7). See doc/forces.md.
 //
@@ -10,12 +11,14 @@
 //     picForces -x displacement -window 2 7
 //     picForces -source grid -CofR "(0.5 0)"     # summed contactForce of every grid.vti
 //     picForces -surface "(0.3 0.05) (0.3 0.4)" -time 4
+//     picForces -wear                            # postProcessing/<toolWear>/<latest>/wearProfile.dat
 #include "applicationMain.H"
 
 #include "ForcePlot.H"
 #include "ForceSeries.H"
 #include "GridContactForces.H"
 #include "SurfaceStress.H"
+#include "WearProfile.H"
 
 #include "io/TimeDirectories.H"
 
@@ -24,6 +27,7 @@
 #include <fstream>
 #include <iostream>
 #include <regex>
+#include <sstream>
 
 namespace {
 
@@ -134,13 +138,37 @@ void forceHistory(const std::string& caseDir, const fs::path& outDir, const po::
     }
 }
 
+void wearProfile(const std::string& caseDir, const fs::path& outDir, const po::variables_map& vm)
+{
+    const WearProfile profile = readWearProfile(vm.count("file") ? vm["file"].as<std::string>() : defaultWearFile(caseDir));
+    std::cout << "Read the wear profile at t = " << profile.time << " s from " << profile.source << '\n';
+    fs::create_directories(outDir);
+    const std::string csv = (outDir / "wear.csv").string();
+    writeWearCsv(profile, csv);
+    std::cout << "Wrote " << csv << '\n';
+    const std::string png = (outDir / "wear.png").string();
+    std::ostringstream title;
+    title << "Wear depth along the tool at t = " << profile.time << " s";
+    if (plotWear(csv, png, profile.faces, title.str())) std::cout << "Wrote " << png << '\n';
+    for (std::size_t k = 0; k < profile.faces.size(); ++k) {
+        const WearStation* deepest = nullptr;
+        for (const auto& st : profile.stations)
+            if (st.face == static_cast<int>(k) && (!deepest || st.depth > deepest->depth)) deepest = &st;
+        if (deepest)
+            std::printf("    %-16s largest depth %.6g m at s = %.6g m (%.6g %.6g)\n", profile.faces[k].c_str(),
+                        deepest->depth, deepest->s, deepest->x, deepest->y);
+    }
+}
+
 } // namespace
 
 int main(int argc, char** argv)
 {
     po::options_description options("picForces options");
     options.add_options()
-        ("file", po::value<std::string>(), "forces.dat to read (default postProcessing/forces/<latest>/forces.dat)")
+        ("file", po::value<std::string>(),
+         "forces.dat to read (default postProcessing/forces/<latest>/forces.dat); with -wear, a wearProfile.dat")
+        ("wear", "the wear profile of the toolWear function object at its last time (CSV, plot, deepest point)")
         ("source", po::value<std::string>()->default_value("forces"),
          "forces: the forces function object's file; grid: summed contactForce of each <time>/grid.vti")
         ("x", po::value<std::string>()->default_value("time"), "abscissa of forces.png: time or displacement")
@@ -156,6 +184,7 @@ int main(int argc, char** argv)
         options, [](const po::variables_map& vm) {
             const std::string caseDir = vm["case"].as<std::string>();
             const fs::path outDir = fs::path(caseDir) / "postProcessing" / "picForces";
+            if (vm.count("wear")) return wearProfile(caseDir, outDir, vm);
             if (vm.count("surface")) return surfaceProfile(caseDir, outDir, vm);
             if (vm.count("time")) throw InputError("", 0, "-time selects the time directory for -surface");
             forceHistory(caseDir, outDir, vm);
