@@ -68,7 +68,6 @@ void SingleField::updateGrid(EngineView& e, double tNew, double dt)
 void SingleField::remapVelocity(EngineView& e, double tNew, double dt)
 {
     Grid& grid = e.grid;
-    const Particles& p = e.particles;
     const ShapeWeights& w = e.weights;
     const int stride = w.stride;
     grid.forEachActiveNode([&](int n) { grid.momentum[n].setZero(); });

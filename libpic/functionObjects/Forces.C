@@ -2,6 +2,7 @@
 
 #include "core/error.H"
 #include "dictionary/Dictionary.H"
+#include "dictionary/ExactNumber.H"
 #include "grid/FaceBand.H"
 #include "grid/Grid.H"
 #include "solver/MpmSolver.H"
@@ -50,6 +51,7 @@ void Forces::start(const MpmSolver& solver, double)
                                                choiceList(rigid));
         bodies_.push_back(static_cast<int>(std::find(all.begin(), all.end(), n) - all.begin()));
     }
+    if (!restarted() || work_.size() != bodies_.size()) work_.assign(bodies_.size(), 0.0);
     for (auto& face : faces_) {
         if (std::find(rigid.begin(), rigid.end(), face.bodyName) == rigid.end())
             throw InputError(file_, line_, "forces " + name() + ": face '" + face.name + "': '" + face.bodyName +
@@ -58,10 +60,12 @@ void Forces::start(const MpmSolver& solver, double)
     }
     std::ofstream& os = file("forces.dat");
     os << "# force of the material on each body [N/m], its moment about CofR (" << CofR_.x() << ' '
-       << CofR_.y() << ") [N m/m] and the body's mean displacement [m]\n# time";
+       << CofR_.y() << ") [N m/m] and the body's mean displacement [m]; forces on faces [N/m]; the work "
+          "each body has done on the material [J/m]\n# time";
     for (int b : bodies_)
         for (const char* c : {"Fx", "Fy", "Mz", "dx", "dy"}) os << ' ' << all[b] << ':' << c;
     for (const auto& face : faces_) os << ' ' << face.name << ":Fx " << face.name << ":Fy";
+    for (int b : bodies_) os << ' ' << all[b] << ":W";
     os << std::endl;
 }
 
@@ -98,7 +102,27 @@ void Forces::write(const MpmSolver& solver, double time)
                 if (band.station(grid.nodePosition(n))) F += grid.fContact[static_cast<std::size_t>(n)];
         os << ' ' << F.x() << ' ' << F.y();
     }
+    for (double w : work_) os << ' ' << w;
     os << std::endl;  // readable while the run goes on
 }
+
+void Forces::at(StepPoint, const MpmSolver& solver)
+{
+    const auto& loads = solver.rigidBodyLoads();
+    const double dt = solver.deltaT(), tMid = solver.time() + 0.5 * dt;
+    for (std::size_t k = 0; k < bodies_.size(); ++k) {
+        const auto b = static_cast<std::size_t>(bodies_[k]);
+        if (b < loads.size()) work_[k] += dt * powerOnMaterial(*solver.rigidBody(bodies_[k]), loads[b], tMid);
+    }
+}
+
+void Forces::writeState(std::ostream& os) const
+{
+    os << "    work (";
+    for (double w : work_) os << ' ' << exactNumber(w);
+    os << " );\n";
+}
+
+void Forces::readState(const Dictionary& state) { work_ = state.getOrDefault<std::vector<double>>("work", {}); }
 
 } // namespace gpic

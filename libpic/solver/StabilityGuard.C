@@ -137,12 +137,7 @@ double StabilityGuard::rigidWork(double t, double dt) const
     const double tMid = t - 0.5 * dt;
     for (std::size_t b = 0; b < rigid_.size() && b < loads.size(); ++b) {
         const RigidBodyDriver* driver = solver_.rigidBody(static_cast<int>(b));
-        if (!rigid_[b] || !driver) continue;
-        // A rigid motion is v(x) = v(0) + omega e_z x x: the body's power against the
-        // material's load (force, moment about the origin) is F.v(0) + M omega.
-        const Vector2 v0 = driver->velocity(tMid, Vector2::Zero());
-        const double omega = driver->velocity(tMid, Vector2::UnitX()).y() - v0.y();
-        w -= loads[b].force.dot(v0) + loads[b].moment * omega;  // the body's work on the material
+        if (rigid_[b] && driver) w += powerOnMaterial(*driver, loads[b], tMid);
     }
     return dt * w;
 }

@@ -1,4 +1,5 @@
-// The toolWear function object (Archard wear along a rigid tool's face). Physics: an elastic
+// What a design study compares tools by: the toolWear function object (Archard wear along a
+// rigid tool's face) and the work a tool does (forces' <body>:W). Wear: an elastic
 // block (60 x 30 mm, rho 1000) slides over a fixed rigid plate, the tool, under its own
 // weight W = rho g A, from v0 = 0.05 m/s. The plate's top face carries p = rho g H and the
 // block slides over it at v(t) = v0 - mu g t until it stops (Coulomb friction, mu g the
@@ -7,6 +8,10 @@
 //     depth h = (k/H) p d where the block covered the face throughout.
 // The wear is also checked against the distance the block actually slid (bodyMotion), which
 // separates the wear integral from the friction law's own accuracy.
+// Work: a plate moving at V drags a block at rest until it moves with it. Friction works on
+// the block through the relative distance V^2 / (2 mu g) and on the plate through twice that:
+// the plate spends W = m V^2, half as the block's kinetic energy and half lost to friction,
+// whatever mu.
 #include "support/Applications.H"
 #include "support/CaseRunner.H"
 
@@ -20,13 +25,15 @@ namespace {
 
 constexpr double g = 9.81, rho = 1000, width = 0.06, height = 0.03, v0 = 0.05, kOverH = 1e-3 / 1e6;
 
-fs::path slidingBlock(const fs::path& dir, double mu, double endTime)
+fs::path slidingBlock(const fs::path& dir, double mu, double endTime, const std::string& plate = "type fixed;",
+                      const std::string& blockVelocity = "(0.05 0)")
 {
     std::ostringstream control;
     control << "endTime " << endTime << "; deltaT 1; adjustTimeStep yes; maxCourant 0.4;\n"
             << "writeControl runTime; writeInterval " << endTime << ";\n"
             << "functions {\n"
                "  motion { type bodyMotion; writeInterval 50; }\n"
+               "  forces { type forces; bodies (plate); writeInterval 50; }\n"
                "  wear { type toolWear; body plate; wearCoefficient 1e-3; hardness 1e6; resolution 0.005;\n"
                "         faces { top { from (0.18 0.02); to (0.02 0.02); } } writeInterval 50; }\n"
                "}\n";
@@ -41,8 +48,8 @@ fs::path slidingBlock(const fs::path& dir, double mu, double endTime)
                     "plate { material steel; shape { type rectangle; min (0.02 0.01); max (0.18 0.02); } "
                     "particlesPerCell 2; }\n"
                     "block { material gel; shape { type rectangle; min (0.07 0.02); max (0.13 0.05); } "
-                    "particlesPerCell 2; velocity (0.05 0); initialStress { type geostatic; K0 0.4285714285714286; } }\n");
-    writeDictionary(dir / "constant/rigidBodies", "plate { type fixed; }\n");
+                    "particlesPerCell 2; velocity " + blockVelocity + "; initialStress { type geostatic; K0 0.4285714285714286; } }\n");
+    writeDictionary(dir / "constant/rigidBodies", "plate { " + plate + " }\n");
     writeDictionary(dir / "constant/g", "value (0 -9.81);\n");
     std::ostringstream contact;
     contact << "law coulombFriction; mu " << mu << "; normals rigidSurface; correctRemapped yes;\n";
@@ -145,4 +152,20 @@ TEST(ToolWear, refusesABodyThatIsNotRigidAndASceneWithoutBodyFields)
     } catch (const InputError& e) {
         EXPECT_NE(std::string(e.what()).find("does not slide"), std::string::npos) << e.what();
     }
+}
+
+TEST(ToolWork, aPlateDraggingABlockUpToItsSpeedSpendsMVSquared)
+{
+    ScratchDir scratch("toolWork");
+    const double V = 0.05, mu = 0.2, m = rho * width * height;
+    const fs::path dir = slidingBlock(scratch.path() / "drag", mu, 3 * V / (mu * g),
+                                      "type prescribedVelocity; velocity (0.05 0);", "(0 0)");
+    runAndKeep(dir);
+    const auto forces = readColumns(dir / "postProcessing/forces/0/forces.dat");
+    const auto motion = readColumns(dir / "postProcessing/motion/0/bodyMotion.dat");
+    const double W = forces.at("plate:W").back();
+    std::cout << "plate's work " << W << " J/m (m V^2 = " << m * V * V << "), block's speed "
+              << motion.at("block:vx").back() << " m/s\n";
+    EXPECT_NEAR(motion.at("block:vx").back(), V, 0.02 * V);  // carried along by then
+    EXPECT_NEAR(W, m * V * V, 0.02 * m * V * V);
 }
