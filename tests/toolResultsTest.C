@@ -1,5 +1,5 @@
 // What a design study compares tools by: the toolWear function object (Archard wear along a
-// rigid tool's face) and the work a tool does (forces' <body>:W). Wear: an elastic
+// rigid tool's face), the work a tool does (forces' <body>:W) and what it carries (toolFill). Wear: an elastic
 // block (60 x 30 mm, rho 1000) slides over a fixed rigid plate, the tool, under its own
 // weight W = rho g A, from v0 = 0.05 m/s. The plate's top face carries p = rho g H and the
 // block slides over it at v(t) = v0 - mu g t until it stops (Coulomb friction, mu g the
@@ -12,6 +12,9 @@
 // the block through the relative distance V^2 / (2 mu g) and on the plate through twice that:
 // the plate spends W = m V^2, half as the block's kinetic energy and half lost to friction,
 // whatever mu.
+// Fill: under a frictionless block at rest the plate slides at V; a region fixed to the plate
+// that starts over the block leaves it, so the mass inside falls as rho H (overlap), the
+// overlap 0.06 m - V t.
 #include "support/Applications.H"
 #include "support/CaseRunner.H"
 
@@ -34,6 +37,8 @@ fs::path slidingBlock(const fs::path& dir, double mu, double endTime, const std:
             << "functions {\n"
                "  motion { type bodyMotion; writeInterval 50; }\n"
                "  forces { type forces; bodies (plate); writeInterval 50; }\n"
+               "  fill { type toolFill; body plate; region { type rectangle; min (0.07 0.02); max (0.13 0.06); }\n"
+               "         writeInterval 50; }\n"
                "  wear { type toolWear; body plate; wearCoefficient 1e-3; hardness 1e6; resolution 0.005;\n"
                "         faces { top { from (0.18 0.02); to (0.02 0.02); } } writeInterval 50; }\n"
                "}\n";
@@ -137,12 +142,13 @@ TEST(ToolWear, refusesABodyThatIsNotRigidAndASceneWithoutBodyFields)
         text.replace(text.find(from), from.size(), to);
         return text;
     };
-    writeDictionary(dir / "system/controlDict", replaced("body plate;", "body block;"));
+    writeDictionary(dir / "system/controlDict", replaced("type toolWear; body plate;", "type toolWear; body block;"));
     try {
         runAndKeep(dir);
         ADD_FAILURE() << "a deformable body was accepted";
     } catch (const InputError& e) {
-        EXPECT_NE(std::string(e.what()).find("'block' is not a rigid body"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("toolWear wear: 'block' is not a rigid body"), std::string::npos)
+            << e.what();
     }
     dir = slidingBlock(scratch.path() / "oneField", 0.0, 0.001);
     writeDictionary(dir / "constant/contactProperties", "law noSlip;\n");
@@ -168,4 +174,27 @@ TEST(ToolWork, aPlateDraggingABlockUpToItsSpeedSpendsMVSquared)
               << motion.at("block:vx").back() << " m/s\n";
     EXPECT_NEAR(motion.at("block:vx").back(), V, 0.02 * V);  // carried along by then
     EXPECT_NEAR(W, m * V * V, 0.02 * m * V * V);
+}
+
+TEST(ToolFill, aRegionFixedToASlidingPlateLeavesTheBlockItStartedUnder)
+{
+    ScratchDir scratch("toolFill");
+    const double V = 0.05, endTime = 0.3;
+    const fs::path dir = slidingBlock(scratch.path() / "fill", 0.0, endTime,
+                                      "type prescribedVelocity; velocity (0.05 0);", "(0 0)");
+    runAndKeep(dir);
+    const auto fill = readColumns(dir / "postProcessing/fill/0/fill.dat");
+    const auto& t = fill.at("time");
+    ASSERT_GT(t.size(), 10u);
+    EXPECT_NEAR(fill.at("mass").front(), rho * width * height, 1e-9);  // the whole block at the start
+    // Particles count by their centres, 2.5 mm apart: the mass falls in steps of a column.
+    const double column = rho * height * 0.0025;
+    for (std::size_t k = 0; k < t.size(); ++k) {
+        const double overlap = std::max(0.0, width - V * t[k]);
+        EXPECT_NEAR(fill.at("mass")[k], rho * height * overlap, column) << "t = " << t[k];
+        EXPECT_NEAR(fill.at("dx")[k], V * t[k], 1e-9);
+        EXPECT_NEAR(fill.at("travel")[k], V * t[k], 1e-9);
+        EXPECT_NEAR(fill.at("rotation")[k], 0.0, 1e-9);
+    }
+    EXPECT_LT(fill.at("mass").back(), 0.8 * rho * width * height);
 }

@@ -1,0 +1,96 @@
+#include "functionObjects/ToolFill.H"
+
+#include "core/error.H"
+#include "dictionary/Dictionary.H"
+#include "dictionary/ExactNumber.H"
+
+#include <algorithm>
+#include <cmath>
+
+namespace gpic {
+
+GPIC_REGISTER(FunctionObject, ToolFill, "toolFill")
+
+ToolFill::ToolFill(const Dictionary& dict, const RunContext& context)
+    : FunctionObject(dict, context),
+      bodyName_(dict.getWord("body", context.bodyNames)),
+      region_(Shape::New(dict.subDict("region"))),
+      factor_(dict.found("factor")
+                  ? dict.getChecked<double>("factor", [](const double& f) { return f > 0; }, "factor > 0")
+                  : 1.0),
+      file_(dict.fileName()),
+      line_(dict.lineOf("body"))
+{
+    body_ = static_cast<int>(std::find(context.bodyNames.begin(), context.bodyNames.end(), bodyName_) -
+                             context.bodyNames.begin());
+    for (const auto& n : dict.getOrDefault<std::vector<std::string>>("bodies", {})) {
+        const auto it = std::find(context.bodyNames.begin(), context.bodyNames.end(), n);
+        if (it == context.bodyNames.end())
+            dict.fail("bodies", "toolFill " + name() + ": '" + n + "' is not a body; valid choices: " +
+                                    choiceList(context.bodyNames));
+        counted_.push_back(static_cast<int>(it - context.bodyNames.begin()));
+    }
+    // The region's lower-left corner: a point of the body to follow it by.
+    reference0_ = reference_ = region_->bounds().first;
+    handle_ = reference_ + Vector2::UnitX();
+}
+
+void ToolFill::start(const MpmSolver& solver, double time)
+{
+    if (!solver.rigidBody(body_))
+        throw InputError(file_, line_, "toolFill " + name() + ": '" + bodyName_ +
+                                           "' is not a rigid body (constant/rigidBodies)");
+    std::ofstream& os = file("fill.dat");
+    os << "# mass inside the region fixed to '" << bodyName_ << "' [kg/m times factor " << factor_
+       << "], its displacement [m], the path length it has travelled [m] and its rotation [deg]\n"
+          "# time mass dx dy travel rotation\n";
+    if (!restarted()) write(solver, time);
+}
+
+Vector2 ToolFill::atStart(const Vector2& x) const
+{
+    const Vector2 e = handle_ - reference_;
+    const double c = e.x() / e.norm(), s = e.y() / e.norm();  // the turn since the start
+    const Vector2 r = x - reference_;
+    return reference0_ + Vector2(c * r.x() + s * r.y(), -s * r.x() + c * r.y());
+}
+
+void ToolFill::at(StepPoint, const MpmSolver& solver)
+{
+    const RigidBodyDriver* tool = solver.rigidBody(body_);
+    const Vector2 before = reference_;
+    reference_ = tool->move(solver.time(), solver.deltaT(), reference_);
+    handle_ = tool->move(solver.time(), solver.deltaT(), handle_);
+    travel_ += (reference_ - before).norm();
+}
+
+void ToolFill::write(const MpmSolver& solver, double time)
+{
+    const Particles& p = solver.particles();
+    double mass = 0;
+    for (std::size_t q = 0; q < p.size(); ++q) {
+        const bool counted = counted_.empty() ? solver.rigidBody(p.body[q]) == nullptr
+                                              : std::find(counted_.begin(), counted_.end(), p.body[q]) != counted_.end();
+        if (counted && region_->inside(atStart(p.x[q]))) mass += p.m[q];
+    }
+    const Vector2 d = reference_ - reference0_, e = handle_ - reference_;
+    std::ofstream& os = file("fill.dat");
+    os << time << ' ' << factor_ * mass << ' ' << d.x() << ' ' << d.y() << ' ' << travel_ << ' '
+       << std::atan2(e.y(), e.x()) * 180.0 / M_PI << std::endl;
+}
+
+void ToolFill::writeState(std::ostream& os) const
+{
+    const auto vec = [](const Vector2& v) { return "(" + exactNumber(v.x()) + ' ' + exactNumber(v.y()) + ")"; };
+    os << "    reference " << vec(reference_) << ";\n    handle " << vec(handle_) << ";\n    travel "
+       << exactNumber(travel_) << ";\n";
+}
+
+void ToolFill::readState(const Dictionary& state)
+{
+    reference_ = state.get<Vector2>("reference");
+    handle_ = state.get<Vector2>("handle");
+    travel_ = state.get<double>("travel");
+}
+
+} // namespace gpic
