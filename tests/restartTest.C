@@ -156,9 +156,10 @@ std::vector<std::string> dataLines(const fs::path& file)
     return rows;
 }
 
-//- A 20 x 20 mm elastic block falling through the outflow bottom of a 40 x 40 mm grid past
-//  a fixed post (its first row leaves at 0.021 s), to t = 0.06 s in 600 steps, written every 300 steps; massFlow, bodyMotion
-//  and forces every 70 steps (a restart at step 300 falls between their rows).
+//- A 20 x 20 mm elastic block falling through the outflow bottom of a 40 x 40 mm grid along
+//  the side of a fixed post (frictional contact; its first row leaves at 0.021 s), to
+//  t = 0.06 s in 600 steps, written every 300 steps; massFlow, bodyMotion, forces, toolWear
+//  and toolFill every 70 steps (a restart at step 300 falls between their rows).
 void fallingBlockWithEveryFunction(const fs::path& dir)
 {
     writeDictionary(dir / "system/controlDict",
@@ -166,7 +167,11 @@ void fallingBlockWithEveryFunction(const fs::path& dir)
                     "functions {\n"
                     "  silo { type massFlow; writeInterval 70; factor 2; region { min (0 0); max (0.04 0.02); } }\n"
                     "  motion { type bodyMotion; writeInterval 70; }\n"
-                    "  post { type forces; bodies (post); writeInterval 70; }\n}\n");
+                    "  post { type forces; bodies (post); writeInterval 70; }\n"
+                    "  wear { type toolWear; body post; wearCoefficient 1e-3; hardness 1e6; writeInterval 70;\n"
+                    "         faces { side { from (0.032 0.006); to (0.032 0.002); } } }\n"
+                    "  fill { type toolFill; body post; region { type rectangle; min (0.01 0); max (0.03 0.012); }\n"
+                    "         writeInterval 70; }\n}\n");
     writeDictionary(dir / "system/mpmSchemes", "updateScheme MUSL;\n");
     writeDictionary(dir / "constant/grid", "origin (0 0); cellSize 0.002; nCells (20 20);\n"
                                            "boundaries { left { type slip; } right { type slip; } bottom { type outflow; } "
@@ -174,12 +179,14 @@ void fallingBlockWithEveryFunction(const fs::path& dir)
     writeDictionary(dir / "constant/materials", "block { type linearElastic; rho 1000; E 1e5; nu 0.3; }\n"
                                                 "steel { type linearElastic; rho 7800; E 2e8; nu 0.3; }\n");
     writeDictionary(dir / "constant/bodies",
-                    "block { material block; shape { type rectangle; min (0.01 0.0021); max (0.03 0.0221); } "
+                    "block { material block; shape { type rectangle; min (0.012 0.0021); max (0.032 0.0221); } "
                     "particlesPerCell 2; }\n"
                     "post { material steel; shape { type rectangle; min (0.032 0.002); max (0.038 0.006); } "
                     "particlesPerCell 2; }\n");
     writeDictionary(dir / "constant/rigidBodies", "post { type fixed; }\n");
     writeDictionary(dir / "constant/g", "value (0 -9.81);\n");
+    // Frictional contact with the post: the block slides down its side and wears it.
+    writeDictionary(dir / "constant/contactProperties", "law coulombFriction; mu 0.3; normals rigidSurface;\n");
 }
 
 } // namespace
@@ -226,7 +233,8 @@ TEST_F(Restart, everyFunctionObjectWritesTheRowsOfTheStraightRun)
     setEntry(split / "system/controlDict", "endTime", "0.06");
     run("picSolver", split);
     for (const auto& [fn, file] : std::vector<std::pair<std::string, std::string>>{
-             {"silo", "massFlow.dat"}, {"motion", "bodyMotion.dat"}, {"post", "forces.dat"}}) {
+             {"silo", "massFlow.dat"}, {"motion", "bodyMotion.dat"}, {"post", "forces.dat"}, {"wear", "wear.dat"},
+             {"wear", "wearProfile.dat"}, {"fill", "fill.dat"}}) {
         SCOPED_TRACE(fn);
         const auto whole = dataLines(straight / "postProcessing" / fn / "0" / file);
         auto parts = dataLines(split / "postProcessing" / fn / "0" / file);
@@ -246,6 +254,15 @@ TEST_F(Restart, everyFunctionObjectWritesTheRowsOfTheStraightRun)
         if (t[k] <= 0.03) outBefore = out[k];
     EXPECT_GT(outBefore, 0.0);
     EXPECT_GT(out.back(), outBefore);
+    // ... and only if the post has worn and done work, and the fill has changed, across the restart.
+    const auto wear = readColumns(straight / "postProcessing/wear/0/wear.dat");
+    const auto fill = readColumns(straight / "postProcessing/fill/0/fill.dat");
+    double wornBefore = 0;
+    for (std::size_t k = 0; k < wear.at("time").size(); ++k)
+        if (wear.at("time")[k] <= 0.03) wornBefore = wear.at("side:volume")[k];
+    EXPECT_GT(wornBefore, 0.0);
+    EXPECT_GT(wear.at("side:volume").back(), wornBefore);
+    EXPECT_NE(fill.at("mass").back(), fill.at("mass").front());
 }
 
 TEST_F(Restart, aRestartWithAnAdjustedTimeStepEndsBitwiseAsTheStraightRun)
