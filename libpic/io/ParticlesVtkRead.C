@@ -66,6 +66,22 @@ void readScalars(vtkDataArray* a, std::vector<double>& out)
 
 bool inPoints(const ParticleField& f) { return f.storedIn && std::string(f.storedIn) == "points"; }
 
+//- The checksum of the points and of every point array, in the file's order.
+std::string particleDataChecksum(vtkPolyData* poly)
+{
+    detail::ParticleChecksum sum;
+    const auto add = [&sum](vtkDataArray* a) {
+        if (!a) return;
+        const auto bytes = static_cast<std::size_t>(a->GetNumberOfValues()) * static_cast<std::size_t>(a->GetDataTypeSize());
+        if (bytes > 0) sum.add(a->GetVoidPointer(0), bytes);
+        sum.endArray();
+    };
+    if (poly->GetPoints()) add(poly->GetPoints()->GetData());
+    vtkPointData* pd = poly->GetPointData();
+    for (int i = 0; pd && i < pd->GetNumberOfArrays(); ++i) add(pd->GetArray(i));
+    return sum.text();
+}
+
 std::vector<std::string> readStrings(vtkFieldData* fd, const char* name)
 {
     std::vector<std::string> values;
@@ -127,7 +143,7 @@ void readParticles(const std::string& path, Particles& p, double& time,
     vtkFieldData* fd = poly->GetFieldData();
     // Files written before the checksum have none; those with one must match it.
     if (auto* sum = vtkStringArray::SafeDownCast(fd ? fd->GetAbstractArray("checksum") : nullptr);
-        sum && sum->GetNumberOfValues() > 0 && sum->GetValue(0) != detail::particleDataChecksum(poly))
+        sum && sum->GetNumberOfValues() > 0 && sum->GetValue(0) != particleDataChecksum(poly))
         cannotReadParticles(path, "its data do not match the checksum written with them: the file is damaged");
     vtkDataArray* timeA = fd ? fd->GetArray("TimeValue") : nullptr;
     if (!timeA || timeA->GetNumberOfTuples() < 1)
