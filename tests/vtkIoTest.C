@@ -483,6 +483,28 @@ TEST_F(VtkIo, corruptHeadersGiveInputError)
     const std::string count("\x05\0\0\0\0\0\0\0sand", 12);
     corrupt(count, std::string("\x05\0\0\0\0\0\0\x7fsand", 12));
     corrupt(count, std::string("\x04\0\0\0\0\0\0\0sand", 12));
+    // Layouts writeParticles never writes are refused rather than misread.
+    corrupt("byte_order=\"LittleEndian\"", "byte_order=\"BigEndian\"");
+    corrupt("<AppendedData encoding=\"raw\">", "<AppendedData encoding=\"base64\">");
+    corrupt("</Piece>", "</Piece><Piece NumberOfPoints=\"0\"></Piece>");
+    corrupt("type=\"Int32\" Name=\"id\"", "type=\"Bit\" Name=\"id\"");
+}
+
+TEST_F(VtkIo, anArrayOfAnotherNumericTypeIsConvertedAsVtkDid)
+{
+    // Same bytes, another type of the same size: the values are taken as that type says.
+    const std::string path = file("p.vtp");
+    const Particles p = sampleParticles(6);
+    writeParticles(path, p, 0.0, {}, {});
+    std::string text = readText(path);
+    const auto at = text.find("type=\"Int32\" Name=\"body\"");
+    ASSERT_NE(at, std::string::npos);
+    text.replace(at, 12, "type=\"UInt32\"");
+    writeText(path, text);
+    Particles q;
+    double t = 0;
+    readParticles(path, q, t);
+    EXPECT_EQ(q.body, p.body);
 }
 
 TEST_F(VtkIo, missingArrayGivesInputError)
