@@ -86,8 +86,8 @@ OutputArray stateArray(const ParticleField& f, const Particles& p)
     a.name = f.name;
     a.components = f.components;
     a.componentNames = f.components > 1;
-    a.tuples = p.size();
     const FieldArray source = fieldArray(f, p);
+    a.tuples = std::visit([](const auto* values) { return values->size(); }, source);
     a.type = std::holds_alternative<std::vector<int>*>(source) ? ValueType::int32 : ValueType::float64;
     const int nc = f.components;
     a.fill = [source, nc](std::size_t begin, std::size_t end, void* out) {
