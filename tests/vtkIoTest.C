@@ -1,15 +1,30 @@
 // VTK particle/grid files, the ParaView collection and time directories: restart files must
-// round-trip bitwise, broken files must give InputError, and directory writes must be atomic.
+// round-trip bitwise, particle files must be the bytes VTK's own writer wrote and read back
+// in VTK's reader, broken files must give InputError, and directory writes must be atomic.
 #include "core/error.H"
 #include "grid/Grid.H"
 #include "io/GridVtk.H"
 #include "io/ParticlesVtk.H"
 #include "io/PvdCollection.H"
 #include "io/TimeDirectories.H"
+#include "io/VtkErrorGuard.H"
+#include "particles/ParticleFields.H"
 #include "particles/Particles.H"
+#include "support/ReferenceParticlesWriter.H"
 
 #include <gtest/gtest.h>
 
+#include <vtkCellArray.h>
+#include <vtkDataArray.h>
+#include <vtkFieldData.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkStringArray.h>
+#include <vtkXMLPolyDataReader.h>
+
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -20,6 +35,7 @@
 #include <random>
 #include <sstream>
 #include <stdexcept>
+#include <variant>
 
 #include <unistd.h>
 
@@ -41,6 +57,10 @@ protected:
     }
     void TearDown() override { fs::remove_all(dir); }
     std::string file(const std::string& name) const { return (dir / name).string(); }
+    //- Writes `p` with writeParticles and with VTK's writer; the files must be the same bytes.
+    void expectBytesOfVtksWriter(const Particles& p, const std::string& name, double time = 0.1 + 0.2,
+                                 const std::vector<std::string>& materials = {"sand", "steel"},
+                                 const std::vector<std::string>& bodies = {"column", "wall", "floor"});
     fs::path dir;
 };
 
@@ -98,6 +118,57 @@ void writeText(const std::string& path, const std::string& text)
 {
     std::ofstream out(path, std::ios::binary | std::ios::trunc);
     out << text;
+}
+
+void VtkIo::expectBytesOfVtksWriter(const Particles& p, const std::string& name, double time,
+                                    const std::vector<std::string>& materials,
+                                    const std::vector<std::string>& bodies)
+{
+    const std::string ours = file(name + ".vtp"), vtks = file(name + "-vtk.vtp");
+    writeParticles(ours, p, time, materials, bodies);
+    reference::writeParticlesWithVtk(vtks, p, time, materials, bodies);
+    const std::string a = readText(ours), b = readText(vtks);
+    const auto [at, _] = std::mismatch(a.begin(), a.end(), b.begin(), b.end());
+    const std::size_t k = static_cast<std::size_t>(at - a.begin());
+    const auto near = [k](const std::string& text) {
+        const std::size_t from = k < 60 ? 0 : k - 60;
+        return text.substr(from, 120);
+    };
+    EXPECT_TRUE(a == b) << name << ": " << a.size() << " bytes against VTK's " << b.size()
+                        << ", first difference at byte " << k << "\nours: " << near(a) << "\nVTK's: " << near(b);
+}
+
+//- A value no decimal or single-precision detour keeps, of magnitude near 10^decade.
+double awkward(std::mt19937_64& rng, int decade)
+{
+    return std::uniform_real_distribution<double>(-1, 1)(rng) * 3.141592653589793 * std::pow(10.0, decade);
+}
+
+void fill(int& v, std::mt19937_64& rng, int) { v = static_cast<int>(rng() % 200001) - 100000; }
+void fill(double& v, std::mt19937_64& rng, int decade) { v = awkward(rng, decade); }
+template <class M> void fill(Eigen::MatrixBase<M>& v, std::mt19937_64& rng, int decade)
+{
+    for (Eigen::Index k = 0; k < v.size(); ++k) v(k) = awkward(rng, decade);
+}
+
+//- n particles carrying `groups` and `history`, every state array filled, each at its own scale.
+Particles particlesWith(std::size_t n, const std::vector<FieldGroup>& groups,
+                        const std::vector<std::string>& history = {})
+{
+    Particles p;
+    for (FieldGroup g : groups) p.carry(g);
+    p.resize(n);
+    for (const auto& name : history) p.declareHistory(name);
+    std::mt19937_64 rng(n + 17 * groups.size());
+    int decade = -9;
+    for (const ParticleField& f : particleFields()) {
+        decade = decade < 6 ? decade + 3 : -8;
+        if (!f.array || f.role != FieldRole::state || !p.carries(f.group)) continue;
+        std::visit([&](auto* a) { for (auto& v : *a) fill(v, rng, decade); }, f.array(p));
+    }
+    for (const auto& name : history)
+        for (double& v : p.history(name)) v = awkward(rng, -2);
+    return p;
 }
 
 void expectInputError(const std::string& path, const std::string& fragment)
@@ -186,6 +257,161 @@ TEST_F(VtkIo, emptyParticlesRoundTrip)
     EXPECT_EQ(t, 0.0);
 }
 
+TEST_F(VtkIo, particleFilesAreTheBytesOfVtksWriterForEveryGroup)
+{
+    using G = FieldGroup;
+    expectBytesOfVtksWriter(particlesWith(40, {}), "plain");
+    expectBytesOfVtksWriter(particlesWith(40, {G::plasticStrain}), "plasticStrain");
+    expectBytesOfVtksWriter(particlesWith(40, {G::affine}), "affine");
+    expectBytesOfVtksWriter(particlesWith(40, {G::polar}), "cosserat");
+    expectBytesOfVtksWriter(particlesWith(40, {}, {"kappa", "damage"}), "history");
+    expectBytesOfVtksWriter(particlesWith(40, {G::plasticStrain, G::affine, G::polar}, {"kappa"}), "everything");
+    expectBytesOfVtksWriter(Particles(), "empty", 0.0, {}, {});
+    expectBytesOfVtksWriter(particlesWith(0, {G::polar}, {"kappa"}), "emptyWithGroups");
+    expectBytesOfVtksWriter(particlesWith(1, {G::plasticStrain}, {"kappa"}), "one");
+    expectBytesOfVtksWriter(sampleParticles(), "sample");
+}
+
+TEST_F(VtkIo, particleFilesAreTheBytesOfVtksWriterForAwkwardValuesAndManyParticles)
+{
+    // Enough particles that every array goes through the writer's buffer in several pieces
+    // and VTK computes its ranges in parallel chunks.
+    Particles p = particlesWith(20011, {FieldGroup::plasticStrain, FieldGroup::polar}, {"kappa"});
+    expectBytesOfVtksWriter(p, "many", 1e-300, {"", "s\xc3\xa4nd", "a b"}, {"x"});
+
+    // What the ranges of the header make of NaN, infinities, values beyond VTK's 1e299 of an
+    // empty range, magnitudes whose square overflows, subnormals and negative zeros.
+    const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        p.m[i] = i % 7 == 3 ? nan : p.m[i];                   // NaNs among values
+        p.V[i] = i == 5 ? inf : i == 9 ? -inf : p.V[i];       // both infinities
+        p.work[i] = 1e300 * (1.0 + static_cast<double>(i));   // all beyond 1e299
+        p.v[i] = i == 2 ? Vector2(1e200, 1.0) : i == 4 ? Vector2(nan, 1.0) : p.v[i];
+        p.halfSize[i] = Vector2(4.9e-324, -4.9e-324) * static_cast<double>(i % 3 + 1);
+        p.history("kappa")[i] = -0.0;
+        p.polar.w[i] = nan;                                    // nothing but NaN
+        p.polar.mu[i] = Vector2(nan, 0.0);                     // no magnitude but NaN
+        p.sigma[i] = SymTensor::Zero();                        // pressure -0 everywhere
+    }
+    expectBytesOfVtksWriter(p, "awkward", std::nextafter(0.0, 1.0));
+    for (std::size_t i = 0; i < p.size(); ++i) p.x[i] = Vector2(inf, -1.0);
+    expectBytesOfVtksWriter(p, "infinitePoints", -inf);
+}
+
+TEST_F(VtkIo, vtksReaderReadsTheParticleFileAsItReadTheFileOfVtksWriter)
+{
+    // ParaView reads the file with vtkXMLPolyDataReader: what it reads must be what it read
+    // from VTK's writer, and be the particles.
+    const Particles p = particlesWith(300, {FieldGroup::plasticStrain, FieldGroup::affine, FieldGroup::polar},
+                                      {"kappa", "damage"});
+    writeParticles(file("ours.vtp"), p, 2.5, {"sand", "steel"}, {"column"});
+    reference::writeParticlesWithVtk(file("vtks.vtp"), p, 2.5, {"sand", "steel"}, {"column"});
+    const auto read = [](const std::string& path) {
+        auto reader = vtkSmartPointer<vtkXMLPolyDataReader>::New();
+        vtkNew<gpic::detail::ErrorCollector> errors;
+        reader->AddObserver(vtkCommand::ErrorEvent, errors);
+        reader->SetFileName(path.c_str());
+        reader->Update();
+        EXPECT_FALSE(errors->failed) << errors->first;
+        return vtkSmartPointer<vtkPolyData>(reader->GetOutput());
+    };
+    const auto ours = read(file("ours.vtp")), vtks = read(file("vtks.vtp"));
+    const auto sameArray = [](vtkAbstractArray* a, vtkAbstractArray* b, const std::string& what) {
+        ASSERT_NE(a, nullptr) << what;
+        ASSERT_NE(b, nullptr) << what;
+        EXPECT_STREQ(a->GetName(), b->GetName()) << what;
+        EXPECT_EQ(a->GetDataType(), b->GetDataType()) << what;
+        EXPECT_EQ(a->GetNumberOfComponents(), b->GetNumberOfComponents()) << what;
+        ASSERT_EQ(a->GetNumberOfValues(), b->GetNumberOfValues()) << what;
+        for (int c = 0; c < a->GetNumberOfComponents(); ++c)
+            EXPECT_STREQ(a->GetComponentName(c), b->GetComponentName(c)) << what << " component " << c;
+        if (auto* s = vtkStringArray::SafeDownCast(a)) {
+            for (vtkIdType k = 0; k < s->GetNumberOfValues(); ++k)
+                EXPECT_EQ(s->GetValue(k), vtkStringArray::SafeDownCast(b)->GetValue(k)) << what;
+            return;
+        }
+        EXPECT_EQ(std::memcmp(a->GetVoidPointer(0), b->GetVoidPointer(0),
+                              static_cast<std::size_t>(a->GetNumberOfValues() * a->GetDataTypeSize())),
+                  0)
+            << what;
+    };
+    ASSERT_EQ(ours->GetNumberOfPoints(), 300);
+    ASSERT_EQ(ours->GetNumberOfVerts(), 300);
+    sameArray(ours->GetPoints()->GetData(), vtks->GetPoints()->GetData(), "points");
+    sameArray(ours->GetVerts()->GetConnectivityArray(), vtks->GetVerts()->GetConnectivityArray(), "connectivity");
+    sameArray(ours->GetVerts()->GetOffsetsArray(), vtks->GetVerts()->GetOffsetsArray(), "offsets");
+    ASSERT_EQ(ours->GetPointData()->GetNumberOfArrays(), vtks->GetPointData()->GetNumberOfArrays());
+    for (int k = 0; k < ours->GetPointData()->GetNumberOfArrays(); ++k)
+        sameArray(ours->GetPointData()->GetAbstractArray(k), vtks->GetPointData()->GetAbstractArray(k),
+                  ours->GetPointData()->GetArrayName(k));
+    ASSERT_EQ(ours->GetFieldData()->GetNumberOfArrays(), 4);
+    for (int k = 0; k < 4; ++k)
+        sameArray(ours->GetFieldData()->GetAbstractArray(k), vtks->GetFieldData()->GetAbstractArray(k),
+                  ours->GetFieldData()->GetAbstractArray(k)->GetName());
+
+    // And the values are the particles', in ParaView's layout.
+    vtkPointData* pd = ours->GetPointData();
+    EXPECT_EQ(ours->GetFieldData()->GetArray("TimeValue")->GetComponent(0, 0), 2.5);
+    for (vtkIdType i : {vtkIdType(0), vtkIdType(137), vtkIdType(299)}) {
+        const auto q = static_cast<std::size_t>(i);
+        double xyz[3];
+        ours->GetPoint(i, xyz);
+        EXPECT_EQ(bits(xyz[0]), bits(p.x[q].x()));
+        EXPECT_EQ(bits(xyz[1]), bits(p.x[q].y()));
+        EXPECT_EQ(xyz[2], 0.0);
+        EXPECT_EQ(pd->GetArray("id")->GetComponent(i, 0), p.id[q]);
+        EXPECT_EQ(bits(pd->GetArray("velocity")->GetComponent(i, 1)), bits(p.v[q].y()));
+        vtkDataArray* stress = pd->GetArray("stress");
+        EXPECT_EQ(bits(stress->GetComponent(i, 1)), bits(p.sigma[q][XY]));
+        EXPECT_EQ(bits(stress->GetComponent(i, 3)), bits(p.polar.sigma21[q]));  // the Cosserat yx
+        EXPECT_EQ(bits(stress->GetComponent(i, 8)), bits(p.sigma[q][ZZ]));
+        EXPECT_EQ(bits(pd->GetArray("affineVelocity")->GetComponent(i, 3)), bits(p.affine[q](1, 0)));
+        EXPECT_EQ(bits(pd->GetArray("damage")->GetComponent(i, 0)), bits(p.history("damage")[q]));
+    }
+}
+
+TEST_F(VtkIo, particlesOfEveryGroupRoundTripBitwiseFromVtksFilesToo)
+{
+    // Files written before the writer streamed (by VTK's writer) read as the new ones do.
+    const Particles p = particlesWith(77, {FieldGroup::plasticStrain, FieldGroup::affine, FieldGroup::polar},
+                                      {"kappa"});
+    reference::writeParticlesWithVtk(file("vtks.vtp"), p, 1.0, {"sand"}, {"column"});
+    writeParticles(file("ours.vtp"), p, 1.0, {"sand"}, {"column"});
+    for (const char* name : {"vtks.vtp", "ours.vtp"}) {
+        SCOPED_TRACE(name);
+        Particles q;
+        double t = 0;
+        readParticles(file(name), q, t);
+        ASSERT_EQ(q.size(), p.size());
+        EXPECT_EQ(q.historyNames(), p.historyNames());
+        for (const ParticleField& f : particleFields()) {
+            if (!f.array || f.role != FieldRole::state) continue;
+            EXPECT_EQ(q.carries(f.group), p.carries(f.group));
+            std::visit(
+                [&](auto* a) {
+                    const auto* b = std::get<std::decay_t<decltype(a)>>(fieldArray(f, q));
+                    ASSERT_EQ(a->size(), b->size());
+                    EXPECT_EQ(std::memcmp(a->data(), b->data(), a->size() * sizeof((*a)[0])), 0)
+                        << (*f.name ? f.name : f.storedIn);
+                },
+                fieldArray(f, p));
+        }
+        EXPECT_EQ(std::memcmp(q.history("kappa").data(), p.history("kappa").data(), p.size() * sizeof(double)), 0);
+    }
+}
+
+TEST_F(VtkIo, anUnwritableParticleFileGivesRunErrorAndLeavesNothing)
+{
+    const std::string path = file("no/such/directory/particles.vtp");
+    try {
+        writeParticles(path, sampleParticles(3), 0.0, {}, {});
+        FAIL() << "expected RunError";
+    } catch (const RunError& e) {
+        EXPECT_NE(std::string(e.what()).find("cannot write particles to " + path), std::string::npos) << e.what();
+    }
+    EXPECT_FALSE(fs::exists(path + ".tmp"));
+}
+
 TEST_F(VtkIo, historyNamedLikeBuiltinArrayIsRejected)
 {
     Particles p = sampleParticles(2);
@@ -257,6 +483,28 @@ TEST_F(VtkIo, corruptHeadersGiveInputError)
     const std::string count("\x05\0\0\0\0\0\0\0sand", 12);
     corrupt(count, std::string("\x05\0\0\0\0\0\0\x7fsand", 12));
     corrupt(count, std::string("\x04\0\0\0\0\0\0\0sand", 12));
+    // Layouts writeParticles never writes are refused rather than misread.
+    corrupt("byte_order=\"LittleEndian\"", "byte_order=\"BigEndian\"");
+    corrupt("<AppendedData encoding=\"raw\">", "<AppendedData encoding=\"base64\">");
+    corrupt("</Piece>", "</Piece><Piece NumberOfPoints=\"0\"></Piece>");
+    corrupt("type=\"Int32\" Name=\"id\"", "type=\"Bit\" Name=\"id\"");
+}
+
+TEST_F(VtkIo, anArrayOfAnotherNumericTypeIsConvertedAsVtkDid)
+{
+    // Same bytes, another type of the same size: the values are taken as that type says.
+    const std::string path = file("p.vtp");
+    const Particles p = sampleParticles(6);
+    writeParticles(path, p, 0.0, {}, {});
+    std::string text = readText(path);
+    const auto at = text.find("type=\"Int32\" Name=\"body\"");
+    ASSERT_NE(at, std::string::npos);
+    text.replace(at, 12, "type=\"UInt32\"");
+    writeText(path, text);
+    Particles q;
+    double t = 0;
+    readParticles(path, q, t);
+    EXPECT_EQ(q.body, p.body);
 }
 
 TEST_F(VtkIo, missingArrayGivesInputError)

@@ -1,49 +1,53 @@
 #include "io/ParticlesChecksum.H"
 
-#include <vtkDataArray.h>
-#include <vtkPointData.h>
-#include <vtkPoints.h>
-#include <vtkPolyData.h>
-
-#include <cstdint>
-#include <cstring>
+#include <algorithm>
 #include <cstdio>
+#include <cstring>
 
 namespace gpic {
 namespace detail {
 
 namespace {
-constexpr std::uint64_t offsetBasis = 14695981039346656037ull, prime = 1099511628211ull;
+constexpr std::uint64_t prime = 1099511628211ull;
+}
 
-void hashBytes(std::uint64_t& h, const void* data, std::size_t bytes)
+void ParticleChecksum::add(const void* data, std::size_t bytes)
 {
     const auto* c = static_cast<const unsigned char*>(data);
+    arrayBytes_ += bytes;
     std::size_t k = 0;
+    if (pendingBytes_ > 0) {  // complete the word an earlier piece began
+        const std::size_t take = std::min<std::size_t>(8 - pendingBytes_, bytes);
+        std::memcpy(pending_ + pendingBytes_, c, take);
+        pendingBytes_ += take;
+        k = take;
+        if (pendingBytes_ < 8) return;
+        std::uint64_t word;
+        std::memcpy(&word, pending_, 8);
+        hash_ = (hash_ ^ word) * prime;
+        pendingBytes_ = 0;
+    }
     for (; k + 8 <= bytes; k += 8) {
         std::uint64_t word;
         std::memcpy(&word, c + k, 8);
-        h = (h ^ word) * prime;
+        hash_ = (hash_ ^ word) * prime;
     }
-    for (; k < bytes; ++k) h = (h ^ c[k]) * prime;
+    std::memcpy(pending_, c + k, bytes - k);
+    pendingBytes_ = bytes - k;
 }
 
-void hashArray(std::uint64_t& h, vtkDataArray* a)
+void ParticleChecksum::endArray()
 {
-    if (!a) return;
-    const auto bytes = static_cast<std::size_t>(a->GetNumberOfValues()) * static_cast<std::size_t>(a->GetDataTypeSize());
-    if (bytes > 0) hashBytes(h, a->GetVoidPointer(0), bytes);
-    h = (h ^ bytes) * prime;  // the length too: a shortened array changes the sum
+    for (std::size_t k = 0; k < pendingBytes_; ++k) hash_ = (hash_ ^ pending_[k]) * prime;
+    hash_ = (hash_ ^ arrayBytes_) * prime;  // the length too: a shortened array changes the sum
+    pendingBytes_ = 0;
+    arrayBytes_ = 0;
 }
-} // namespace
 
-std::string particleDataChecksum(vtkPolyData* poly)
+std::string ParticleChecksum::text() const
 {
-    std::uint64_t h = offsetBasis;
-    if (poly->GetPoints()) hashArray(h, poly->GetPoints()->GetData());
-    vtkPointData* pd = poly->GetPointData();
-    for (int i = 0; pd && i < pd->GetNumberOfArrays(); ++i) hashArray(h, pd->GetArray(i));
     char text[32];
-    std::snprintf(text, sizeof text, "fnv1a64:%016llx", static_cast<unsigned long long>(h));
+    std::snprintf(text, sizeof text, "fnv1a64:%016llx", static_cast<unsigned long long>(hash_));
     return text;
 }
 

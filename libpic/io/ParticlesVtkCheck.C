@@ -39,12 +39,12 @@ bool parseCount(const std::string& text, std::uint64_t& value)
 
 } // namespace
 
-void checkParticlesLayout(const std::string& path)
+ParticlesFileLayout checkParticlesLayout(const std::string& path)
 {
     // Known types and their sizes (0: not checked by size).
-    static const std::array<std::pair<const char*, std::uint64_t>, 12> known{{
+    static const std::array<std::pair<const char*, std::uint64_t>, 11> known{{
         {"Int8", 1}, {"UInt8", 1}, {"Int16", 2}, {"UInt16", 2}, {"Int32", 4}, {"UInt32", 4},
-        {"Int64", 8}, {"UInt64", 8}, {"Float32", 4}, {"Float64", 8}, {"String", 0}, {"Bit", 0}}};
+        {"Int64", 8}, {"UInt64", 8}, {"Float32", 4}, {"Float64", 8}, {"String", 0}}};
     std::ifstream in(path, std::ios::binary);
     in.seekg(0, std::ios::end);
     const auto fileSize = static_cast<std::uint64_t>(in.tellg());
@@ -59,6 +59,10 @@ void checkParticlesLayout(const std::string& path)
         if (tag == std::string::npos) tag = header.find("<AppendedData");
         if (tag != std::string::npos) underscore = header.find('_', tag);
     }
+    const auto file = header.find("<VTKFile");
+    const std::string root =
+        file == std::string::npos ? "" : header.substr(file, header.find('>', file) - file);
+    if (attribute(root, "type") != "PolyData") cannotReadParticles(path, "not a VTK XML PolyData file");
     if (underscore == std::string::npos) cannotReadParticles(path, "no appended data block");
     // VTK takes the first non-blank character after the tag as the start of the data.
     const auto tagEnd = header.find('>', tag);
@@ -66,88 +70,117 @@ void checkParticlesLayout(const std::string& path)
         cannotReadParticles(path, "corrupt appended data block");
     in.clear();
     const std::uint64_t dataStart = underscore + 1;
+    const std::string appendedElement = header.substr(tag, tagEnd - tag);
     header.resize(tag);
 
-    const auto file = header.find("<VTKFile");
-    const std::string root =
-        file == std::string::npos ? "" : header.substr(file, header.find('>', file) - file);
     if (attribute(root, "header_type") != "UInt64" ||
         root.find(" compressor=") != std::string::npos)
         cannotReadParticles(path, "not written by writeParticles (expected "
                                   "header_type=\"UInt64\" and no compressor)");
+    if (attribute(root, "byte_order") != "LittleEndian" || attribute(appendedElement, "encoding") != "raw")
+        cannotReadParticles(path, "not written by writeParticles (expected "
+                                  "byte_order=\"LittleEndian\" and raw appended data)");
 
     // Point arrays have NumberOfPoints tuples; with the byte counts checked against it, a
-    // corrupt count cannot make VTK allocate more than the file holds.
+    // corrupt count cannot make the reader allocate or read more than the file holds.
     const auto piece = header.find("<Piece");
     const std::string pieceElement =
         piece == std::string::npos ? "" : header.substr(piece, header.find('>', piece) - piece);
     std::uint64_t nPoints = 0;
     if (!parseCount(attribute(pieceElement, "NumberOfPoints"), nPoints))
         cannotReadParticles(path, "no NumberOfPoints");
+    if (header.find("<Piece", piece + 1) != std::string::npos)
+        cannotReadParticles(path, "not written by writeParticles (more than one piece)");
     const auto inside = [&](std::size_t pos, const char* open, const char* close) {
         const auto o = header.rfind(open, pos);
         const auto c = header.rfind(close, pos);
         return o != std::string::npos && (c == std::string::npos || c < o);
     };
 
-    for (const char* name : {"<DataArray", "<Array"}) {
-        for (auto pos = header.find(name); pos != std::string::npos;
-             pos = header.find(name, pos + 1)) {
-            const auto end = header.find('>', pos);
-            const std::string element =
-                header.substr(pos, end == std::string::npos ? std::string::npos : end - pos);
-            const std::string arrayName = attribute(element, "Name");
-            const std::string type = attribute(element, "type");
-            const auto kind = std::find_if(known.begin(), known.end(),
-                                           [&](const auto& k) { return type == k.first; });
-            if (kind == known.end()) cannotReadParticles(path, "unknown array type '" + type + "'");
-            if (attribute(element, "format") != "appended")
-                cannotReadParticles(path, "array '" + arrayName + "' is not appended data");
+    // Both kinds of element, in file order.
+    std::vector<std::size_t> elements;
+    for (const char* name : {"<DataArray", "<Array"})
+        for (auto pos = header.find(name); pos != std::string::npos; pos = header.find(name, pos + 1))
+            elements.push_back(pos);
+    std::sort(elements.begin(), elements.end());
 
-            // Each block is a UInt64 byte count followed by that many bytes.
-            std::uint64_t offset = 0, bytes = 0;
-            const bool offsetOk = parseCount(attribute(element, "offset"), offset);
-            const std::uint64_t at = dataStart + offset;
-            if (!offsetOk || offset > fileSize || at > fileSize || fileSize - at < 8 ||
-                !in.seekg(static_cast<std::streamoff>(at)) ||
-                !in.read(reinterpret_cast<char*>(&bytes), sizeof bytes) ||
-                bytes > fileSize - at - 8)
-                cannotReadParticles(path, "truncated or corrupt: data of array '" + arrayName +
-                                              "' runs past the end of the file");
-            std::uint64_t tuples = 0, components = 1;
-            const bool pointArray = inside(pos, "<PointData", "</PointData>") ||
-                                    inside(pos, "<Points>", "</Points>");
-            const bool counted = pointArray || !attribute(element, "NumberOfTuples").empty();
-            if (pointArray) tuples = nPoints;
-            else if (counted && !parseCount(attribute(element, "NumberOfTuples"), tuples))
-                cannotReadParticles(path, "bad NumberOfTuples of array '" + arrayName + "'");
-            if (!attribute(element, "NumberOfComponents").empty() &&
-                !parseCount(attribute(element, "NumberOfComponents"), components))
-                cannotReadParticles(path, "bad NumberOfComponents of array '" + arrayName + "'");
-            bool sizeOk = true;
-            if (counted && kind->second > 0) {
-                // Divide rather than multiply, so that corrupt counts cannot overflow.
-                if (tuples == 0 || components == 0) sizeOk = bytes == 0;
-                else if (components > fileSize) sizeOk = false;
-                else sizeOk = bytes % (components * kind->second) == 0 &&
-                              bytes / (components * kind->second) == tuples;
-            }
-            if (!sizeOk)
-                cannotReadParticles(path, "array '" + arrayName + "' holds " +
-                                              std::to_string(bytes) + " bytes, expected " +
-                                              std::to_string(tuples) + " tuples of " +
-                                              std::to_string(components) + " " + type);
-            if (type == "String") {
-                // NumberOfTuples strings, each terminated by '\0', filling the block exactly.
-                std::string block(bytes, '\0');
-                in.read(block.data(), static_cast<std::streamsize>(bytes));
-                const auto strings = std::count(block.begin(), block.end(), '\0');
-                if (!in || (bytes > 0 && block.back() != '\0') ||
-                    std::to_string(strings) != attribute(element, "NumberOfTuples"))
-                    cannotReadParticles(path, "corrupt string array '" + arrayName + "'");
-            }
+    ParticlesFileLayout layout;
+    layout.nPoints = nPoints;
+    for (const std::size_t pos : elements) {
+        const auto end = header.find('>', pos);
+        const std::string element =
+            header.substr(pos, end == std::string::npos ? std::string::npos : end - pos);
+        const std::string arrayName = attribute(element, "Name");
+        const std::string type = attribute(element, "type");
+        const auto kind = std::find_if(known.begin(), known.end(),
+                                       [&](const auto& k) { return type == k.first; });
+        if (kind == known.end()) cannotReadParticles(path, "unknown array type '" + type + "'");
+        if (attribute(element, "format") != "appended")
+            cannotReadParticles(path, "array '" + arrayName + "' is not appended data");
+
+        // Each block is a UInt64 byte count followed by that many bytes.
+        std::uint64_t offset = 0, bytes = 0;
+        const bool offsetOk = parseCount(attribute(element, "offset"), offset);
+        const std::uint64_t at = dataStart + offset;
+        if (!offsetOk || offset > fileSize || at > fileSize || fileSize - at < 8 ||
+            !in.seekg(static_cast<std::streamoff>(at)) ||
+            !in.read(reinterpret_cast<char*>(&bytes), sizeof bytes) ||
+            bytes > fileSize - at - 8)
+            cannotReadParticles(path, "truncated or corrupt: data of array '" + arrayName +
+                                          "' runs past the end of the file");
+        std::uint64_t tuples = 0, components = 1;
+        const bool inPointData = inside(pos, "<PointData", "</PointData>");
+        const bool inPoints = inside(pos, "<Points>", "</Points>");
+        const bool pointArray = inPointData || inPoints;
+        const bool counted = pointArray || !attribute(element, "NumberOfTuples").empty();
+        if (pointArray) tuples = nPoints;
+        else if (counted && !parseCount(attribute(element, "NumberOfTuples"), tuples))
+            cannotReadParticles(path, "bad NumberOfTuples of array '" + arrayName + "'");
+        if (!attribute(element, "NumberOfComponents").empty() &&
+            !parseCount(attribute(element, "NumberOfComponents"), components))
+            cannotReadParticles(path, "bad NumberOfComponents of array '" + arrayName + "'");
+        bool sizeOk = true;
+        if (counted && kind->second > 0) {
+            // Divide rather than multiply, so that corrupt counts cannot overflow.
+            if (tuples == 0 || components == 0) sizeOk = bytes == 0;
+            else if (components > fileSize) sizeOk = false;
+            else sizeOk = bytes % (components * kind->second) == 0 &&
+                          bytes / (components * kind->second) == tuples;
         }
+        if (!sizeOk)
+            cannotReadParticles(path, "array '" + arrayName + "' holds " +
+                                          std::to_string(bytes) + " bytes, expected " +
+                                          std::to_string(tuples) + " tuples of " +
+                                          std::to_string(components) + " " + type);
+        ParticleFileArray a;
+        a.section = inPointData ? ParticleFileArray::Section::point
+                    : inPoints  ? ParticleFileArray::Section::points
+                    : inside(pos, "<FieldData", "</FieldData>") ? ParticleFileArray::Section::field
+                                                                : ParticleFileArray::Section::other;
+        a.name = arrayName;
+        a.type = type;
+        a.components = components;
+        a.tuples = tuples;
+        a.bytes = bytes;
+        a.dataAt = at + 8;
+        if (type == "String") {
+            // NumberOfTuples strings, each terminated by '\0', filling the block exactly.
+            std::string block(bytes, '\0');
+            in.read(block.data(), static_cast<std::streamsize>(bytes));
+            const auto strings = std::count(block.begin(), block.end(), '\0');
+            if (!in || (bytes > 0 && block.back() != '\0') ||
+                std::to_string(strings) != attribute(element, "NumberOfTuples"))
+                cannotReadParticles(path, "corrupt string array '" + arrayName + "'");
+            if (a.section == ParticleFileArray::Section::field)
+                for (std::size_t begin = 0; begin < block.size();) {
+                    const auto zero = block.find('\0', begin);
+                    a.strings.push_back(block.substr(begin, zero - begin));
+                    begin = zero + 1;
+                }
+        }
+        layout.arrays.push_back(std::move(a));
     }
+    return layout;
 }
 
 } // namespace detail
