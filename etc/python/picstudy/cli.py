@@ -85,6 +85,10 @@ def main(argv=None):
     except RuntimeError as e:
         print('Error: %s' % e, file=sys.stderr)
         return 2
+    except BrokenPipeError:
+        # the reader of the output stopped (picStudy -dryRun | head): not an error of the study
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return 1
 
 
 def study_main(args):
