@@ -14,6 +14,8 @@ import subprocess
 import sys
 import time
 
+from . import runcase
+
 PACKAGE_PARENT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 
@@ -66,7 +68,7 @@ def run_local(cases, options, report):
                 print('  running %s' % case.name, flush=True)
                 # a session of its own: only this loop passes a Ctrl-C on, once
                 process = subprocess.Popen(worker_command(case.directory), env=worker_environment(threads),
-                                           start_new_session=True)
+                                           start_new_session=True, preexec_fn=runcase.die_with_parent)
                 running[process] = case
             time.sleep(0.1)
             for process in [p for p in running if p.poll() is not None]:

@@ -7,6 +7,7 @@ case's status file, atomically, as the last thing it does: a case without one ha
 run to its end and runs again when the study resumes. A run stopped by a signal (Ctrl-C,
 a batch system's kill) writes none, so it counts as not run.
 """
+import ctypes
 import json
 import os
 import shlex
@@ -36,6 +37,16 @@ def write_atomically(path, text):
         f.flush()
         os.fsync(f.fileno())
     os.replace(temporary, path)
+
+
+def die_with_parent():
+    """For Popen's preexec_fn: the child gets SIGTERM when the process that started it dies,
+    so a study killed outright (a test's time-out, kill -9) leaves no run behind, though
+    each run has a session of its own (below)."""
+    try:
+        ctypes.CDLL(None, use_errno=True).prctl(1, signal.SIGTERM)   # PR_SET_PDEATHSIG
+    except (OSError, AttributeError):
+        pass
 
 
 class Stop:
@@ -68,7 +79,7 @@ def run(case_directory):
         with open(os.path.join(case_directory, log), 'w') as out:
             stop.child = subprocess.Popen(['bash', '-c', command], cwd=case_directory, stdout=out,
                                           stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL,
-                                          start_new_session=True)
+                                          start_new_session=True, preexec_fn=die_with_parent)
             code = stop.child.wait()
         if stop.signal is not None or code < 0 or code >= 128:
             return 128 + (stop.signal or (-code if code < 0 else code - 128))   # no status: runs again
