@@ -1,6 +1,7 @@
 #!/bin/bash
 # A four-case study run by the local executor and as a Slurm job array on a one-node
-# cluster started here (slurmLocal.sh) gives the same results.csv but for the wall time.
+# cluster started here (slurmLocal.sh) gives the same results.csv but for the wall time;
+# so does an array submitted with -noWait and followed by a second picStudy.
 # Usage: studyLocalSlurm.sh <source dir> <binary dir>
 . "$(dirname "$0")/scratchRun.sh" "$@"
 . "$(dirname "$0")/studyCase.sh"
@@ -27,4 +28,13 @@ for row in csv.DictReader(open(sys.argv[1])):
 PY
 diff <(without_wall_time "$local_csv") <(without_wall_time "$slurm_csv") \
     || { echo "local and Slurm results differ"; exit 1; }
+# Submitted without waiting, then picStudy again at once: it follows the queued array
+# instead of submitting the cases a second time, and collects the same rows.
+picStudy -quiet -output "$work/queued" -executor slurm -noWait > noWait.txt
+picStudy -quiet -output "$work/queued" -executor slurm > follow.txt
+cat noWait.txt follow.txt
+grep -q "still queued: following it" follow.txt || { echo "the second call did not follow the queued array"; exit 1; }
+[ "$(ls "$work"/queued/four/slurm/*_*.out | wc -l)" = 4 ] || { echo "cases ran twice"; exit 1; }
+diff <(without_wall_time "$local_csv") <(without_wall_time "$work/queued/four/results.csv") \
+    || { echo "the followed array's results differ"; exit 1; }
 echo "local and Slurm: the same 4 rows but for the wall time"

@@ -107,7 +107,16 @@ def study_main(args):
     print('Study %s: %d cases (%s design), %d to run, in %s'
           % (study.name, len(all_cases), study.design, len(pending), directory))
     lost = {}
-    if not args.collect:
+    queued = None
+    if study.executor == 'slurm' and not (args.collect or args.dryRun):
+        queued = executors.queued_job(directory)
+    if queued:
+        # an earlier call's array still runs the cases: follow it, neither rewrite nor rerun them
+        print('slurm: job array %s of an earlier call is still queued: following it' % queued)
+        code = run(study, directory, executors.submitted_cases(directory, all_cases), lost, args, queued)
+        if code is not None:
+            return code
+    elif not args.collect:
         if args.maxCases is not None:
             pending = pending[:args.maxCases]
         for case in all_cases:
@@ -135,8 +144,9 @@ def study_main(args):
     return 2 if any(r['status'] == 'failed' for r in rows) else 0
 
 
-def run(study, directory, pending, lost, args):
-    """Runs the pending cases; an exit status when the study must stop before collecting."""
+def run(study, directory, pending, lost, args, job=None):
+    """Runs the pending cases (or follows the Slurm array `job` that runs them); an exit
+    status when the study must stop before collecting."""
     if study.executor == 'local':
         def ended(case, code):
             row = results.collect(study, case)
@@ -154,7 +164,8 @@ def run(study, directory, pending, lost, args):
             print('Stopped by signal %d: %s; picStudy again resumes' % (e.number, summary(rows)))
             return 128 + e.number
         return None
-    job = executors.submit_slurm(study, directory, pending, study.slurm)
+    if job is None:
+        job = executors.submit_slurm(study, directory, pending, study.slurm)
     if args.noWait:
         print('Follow it with: squeue -j %s; then collect with: picStudy -collect' % job)
         return 0
@@ -162,7 +173,7 @@ def run(study, directory, pending, lost, args):
                            lambda states: print('  job %s: %s' % (job, states), flush=True))
     states = None
     for index, case in enumerate(pending):
-        if not case.is_current(case.status(), study.run):
+        if case is not None and not case.is_current(case.status(), study.run):
             if states is None:
                 states = executors.task_end_states(job)
             how = states.get(str(index), 'see %s/slurm/%s_%d.out' % (directory, job, index))

@@ -144,6 +144,26 @@ def queued_tasks(job):
     return tasks
 
 
+def queued_job(study_directory):
+    """The job id of the study's last array while any of its tasks is queued or running."""
+    try:
+        with open(os.path.join(study_directory, 'slurm', 'job')) as f:
+            job = f.read().strip()
+    except OSError:
+        return None
+    try:
+        return job if job and queued_tasks(job) else None
+    except (OSError, RuntimeError):
+        return None
+
+
+def submitted_cases(study_directory, cases):
+    """The cases in the order of the last array's task indices."""
+    by_directory = {case.directory: case for case in cases}
+    with open(os.path.join(study_directory, 'slurm', 'cases')) as f:
+        return [by_directory.get(line.strip()) for line in f if line.strip()]
+
+
 def follow_slurm(job, interval, report_states):
     """Waits until no task of the job is queued or running, printing each change of counts."""
     last = None

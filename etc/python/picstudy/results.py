@@ -6,7 +6,7 @@ import os
 
 import gpicdat
 
-from .errors import InputError, choices
+from .errors import choices
 
 FIXED_COLUMNS = ['particles', 'steps', 'wallTime_s', 'status', 'error']
 
@@ -80,19 +80,8 @@ def collect(study, case, lost=None):
         for result in study.results:
             try:
                 value = reduce(series(case.directory, result), result)
-            except InputError:
-                raise
             except (OSError, KeyError, ValueError):
                 value = None
             row[result.name] = '' if value is None else value
     return row
 
-
-def check_columns(study, case):
-    """An InputError for a result whose column a finished case lacks, before the table."""
-    status = case.status()
-    if status and status.get('status') == 'finished':
-        for result in study.results:
-            columns = series(case.directory, result)
-            if columns:
-                reduce(columns, result)
