@@ -34,6 +34,7 @@ refused 's/value "(0.3 {0.4 - depth})"/value "(0.3 {__import__(1)})"/' value 'un
 refused 's/functionObject forces; column front:Fx/functionObject force; column front:Fx/' functionObject 'valid choices: forces'
 refused 's/statistic max;/statistic median;/' statistic 'valid choices: mean, max, min, at, last'
 refused 's/^design .*/design random;/' design 'valid choices: factorial, latinHypercube'
+refused 's/file constant\/contactProperties; entry mu;/file constant\/bodies; entry blade\/shape\/min;/' entry 'set twice (also by depth)'
 [ $failures = 0 ] || { echo "$failures inputs not refused as expected"; exit 1; }
 cp studyDict.good system/studyDict
 code=0; picStudy -executor pbs -dryRun 2> err.txt || code=$?

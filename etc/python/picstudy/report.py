@@ -73,7 +73,7 @@ def plot(study, directory, rows):
                 "set title 'study %s: %s against %s'" % (study.name, label, p.name),
                 "set xlabel '%s'" % p.name,
                 "set ylabel '%s'" % label,
-                "set key outside bottom center horizontal",
+                "set key top left",
                 "set grid",
                 "plot " + ', '.join("'%s.dat' index %d using 1:2 with linespoints pt 7 title '%s'"
                                     % (base, k, t.replace("'", "''")) for k, t in enumerate(titles)),

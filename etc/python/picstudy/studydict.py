@@ -132,6 +132,11 @@ def _parameters(parameters, study):
         if not targets:
             raise InputError(d.path, d.line, "parameter '%s' sets no entry: give file and entry, or set { ... }"
                              % entry.keyword)
+        for t in targets:
+            other = next((p.name for p in out for u in p.targets if (u.file, u.entry) == (t.file, t.entry)), None)
+            if other or sum((u.file, u.entry) == (t.file, t.entry) for u in targets) > 1:
+                raise InputError(STUDY_DICT, t.line, "keyword 'entry' in dictionary %s: %s %s is set twice (also by %s)"
+                                 % (t.where, t.file, t.entry, other or entry.keyword))
         out.append(Parameter(entry.keyword, values, bounds, targets, entry.line))
     if not out:
         raise InputError(parameters.path, parameters.line, 'dictionary parameters holds no parameter')
