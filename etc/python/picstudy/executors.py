@@ -66,7 +66,7 @@ def run_local(cases, options, report):
             while waiting and len(running) < parallel and not stopped:
                 case = waiting.pop(0)
                 print('  running %s' % case.name, flush=True)
-                # a session of its own: only this loop passes a Ctrl-C on, once
+                # setsid: a terminal's Ctrl-C reaches the case only through this loop, once
                 process = subprocess.Popen(worker_command(case.directory), env=worker_environment(threads),
                                            start_new_session=True, preexec_fn=runcase.die_with_parent)
                 running[process] = case

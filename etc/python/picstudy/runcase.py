@@ -42,7 +42,7 @@ def write_atomically(path, text):
 def die_with_parent():
     """For Popen's preexec_fn: the child gets SIGTERM when the process that started it dies,
     so a study killed outright (a test's time-out, kill -9) leaves no run behind, though
-    each run has a session of its own (below)."""
+    each run is started with setsid (below)."""
     try:
         ctypes.CDLL(None, use_errno=True).prctl(1, signal.SIGTERM)   # PR_SET_PDEATHSIG
     except (OSError, AttributeError):
@@ -51,7 +51,7 @@ def die_with_parent():
 
 class Stop:
     """The first SIGINT or SIGTERM, passed on once to the running command. The command runs
-    in a session of its own, so a terminal's Ctrl-C reaches it only this way: twice would
+    with setsid, so a terminal's Ctrl-C reaches it only this way: twice would
     end picSolver at once instead of letting it write its last state."""
 
     def __init__(self):
