@@ -49,7 +49,8 @@ foreach(tutorial "verification/elasticBar;bar.png;error.png"
                  "earthmoving/silos;mass.png;layers-end.png;error.png"
                  "materials/oedometerPoint;oedometer.png"
                  "geotechnics/silo;flowRate.png;flowPattern-0.2.png;error.png"
-                 "geotechnics/columnCollapse;deposit.png")
+                 "geotechnics/columnCollapse;deposit.png"
+                 "studies/bladeDepthFriction;force.png;error.png")
   list(GET tutorial 0 path)
   list(SUBLIST tutorial 1 -1 plots)
   string(REPLACE "/" "_" name "tutorial_${path}")
@@ -75,3 +76,14 @@ set_tests_properties(benchQuick PROPERTIES TIMEOUT 600 LABELS integration)
 add_test(NAME massScalingAnchor
          COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/scripts/massScaling.sh ${PROJECT_SOURCE_DIR} ${PROJECT_BINARY_DIR})
 set_tests_properties(massScalingAnchor PROPERTIES TIMEOUT 600 LABELS integration)
+
+# Design studies (picStudy, etc/python/picstudy) on a four-case blade study pushed 2 mm:
+# the dry run's case files line by line, bad studyDicts, resuming and a failed case, and
+# local against Slurm (a one-node cluster the test starts: tests/scripts/slurmLocal.sh).
+foreach(study studyDryRun studyBadInput studyResume studyLocalSlurm)
+  add_test(NAME ${study}
+           COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/scripts/${study}.sh ${PROJECT_SOURCE_DIR} ${PROJECT_BINARY_DIR})
+  set_tests_properties(${study} PROPERTIES TIMEOUT 300 LABELS integration)
+endforeach()
+# Slurm's daemons want the machine's cores: not beside another test that would take them.
+set_tests_properties(studyLocalSlurm PROPERTIES RUN_SERIAL TRUE)

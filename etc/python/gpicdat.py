@@ -82,27 +82,34 @@ def option(argv, name, count, default):
     return [float(v) for v in argv[k + 1:k + 1 + count]]
 
 
+def read_series(case, function_object, file):
+    """Columns of `file` from every postProcessing/<function_object>/<start>/ directory of a
+    case, in time order. A restart adds a directory; its lines replace the earlier run's
+    from its start on."""
+    import glob
+    import os
+    paths = sorted(glob.glob(os.path.join(case, 'postProcessing', function_object, '*', file)),
+                   key=lambda p: float(os.path.basename(os.path.dirname(p))))
+    series = {}
+    for path in paths:
+        c = read_columns(path)
+        start = c['time'][0] if c.get('time') else float('inf')
+        while series.get('time') and series['time'][-1] >= start:
+            for column in series.values():
+                column.pop()
+        for name, values in c.items():
+            series.setdefault(name, []).extend(values)
+    return series
+
+
 def tool_forces(case, body, face=None):
     """(time, Fx, Fy, dx) of `body` from every postProcessing/forces/<start>/forces.dat of a
     case, in time order: the force of the material on the tool (on its `face` of the forces
-    function object's `faces`, if given) and the tool's travel. A restart adds a directory;
-    its lines replace the earlier run's from its start on."""
-    import glob
-    import os
-    files = sorted(glob.glob(os.path.join(case, 'postProcessing', 'forces', '*', 'forces.dat')),
-                   key=lambda p: float(os.path.basename(os.path.dirname(p))))
-    t, fx, fy, dx = [], [], [], []
-    for path in files:
-        c = read_columns(path)
-        start = c['time'][0] if c['time'] else float('inf')
-        while t and t[-1] >= start:
-            for column in (t, fx, fy, dx):
-                column.pop()
-        t += c['time']
-        fx += c[(face or body) + ':Fx']
-        fy += c[(face or body) + ':Fy']
-        dx += c[body + ':dx']
-    return t, fx, fy, dx
+    function object's `faces`, if given) and the tool's travel."""
+    c = read_series(case, 'forces', 'forces.dat')
+    if not c:
+        return [], [], [], []
+    return c['time'], c[(face or body) + ':Fx'], c[(face or body) + ':Fy'], c[body + ':dx']
 
 
 def window_mean(t, f, keep):
