@@ -176,8 +176,11 @@ TEST(ParticleFields, aGroupHasArraysExactlyWhileItIsCarried)
         EXPECT_LT(d.bytes(), all);  // dropping releases the memory
         d.resize(20);
         d.carry(g);  // back, zero for all
-        for (const ParticleField& f : particleFields())
-            if (f.array) EXPECT_EQ(arraySize(f, d), 20u);
+        for (const ParticleField& f : particleFields()) {
+            if (f.array) {
+                EXPECT_EQ(arraySize(f, d), 20u);
+            }
+        }
     }
     EXPECT_THROW(p.drop(FieldGroup::core), std::logic_error);
 }
