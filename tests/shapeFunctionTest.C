@@ -149,7 +149,9 @@ TEST(ShapeFunctions, quadraticBSplineHasTheStandardValuesInsideAndOnlyTheSideNod
             const std::size_t k = static_cast<std::size_t>(q * 9 + a);
             const Vector2 xi = grid.nodePosition(w.node[k]);
             const bool onSide = q == 1 ? xi.x() == 0.0 : (xi.x() == 8.0 && xi.y() == 0.0);
-            if (!onSide) EXPECT_EQ(w.N[k], 0.0) << q << ": " << xi.transpose();
+            if (!onSide) {
+                EXPECT_EQ(w.N[k], 0.0) << q << ": " << xi.transpose();
+            }
         }
 }
 

@@ -35,6 +35,11 @@ void LinearElastic::updateStress(Particles& p, const ParticleBlock& block, doubl
         s[YY] += alpha2 * de[XX] + alpha1 * de[YY];
         s[ZZ] += alpha2 * (de[XX] + de[YY]);
         s[XY] += G2 * de[XY];
+        if (de[ZZ] != 0.0) {  // axisymmetric: the hoop strain (plane strain has none)
+            s[XX] += alpha2 * de[ZZ];
+            s[YY] += alpha2 * de[ZZ];
+            s[ZZ] += alpha1 * de[ZZ];
+        }
     }
 }
 

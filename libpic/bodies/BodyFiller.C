@@ -112,8 +112,9 @@ FilledBodies fillBodies(const Dictionary& bodiesDict, const Grid& grid,
                         const Vector2 x = grid.nodePosition(i, j) +
                                           Vector2((a + 0.5) * h.x() / n, (b + 0.5) * h.y() / n);
                         if (!shape->inside(x)) continue;
-                        const std::size_t q = out.particles.add(
-                            x, materials[mat]->rho() * volume, volume, half, bodyId, mat);
+                        // Axisymmetric: the ring the particle stands for, per radian (A r).
+                        const double V = grid.axisymmetric() ? volume * x.x() : volume;
+                        const std::size_t q = out.particles.add(x, materials[mat]->rho() * V, V, half, bodyId, mat);
                         const double phase = wavenumber.dot(x - grid.origin());
                         out.particles.v[q] = v0 + amplitude * std::sin(phase);
                         out.particles.sigma[q] = stress.at(x);

@@ -28,9 +28,25 @@ std::vector<std::unique_ptr<Material>> readMaterials(const Dictionary& materials
 std::array<std::unique_ptr<BoundaryCondition>, 4> readBoundaries(const Dictionary& gridDict)
 {
     const Dictionary& sides = gridDict.subDict("boundaries");
+    // The axis of an axisymmetric scene (the left side at r = 0): u_r = 0 there, a mirror.
+    const bool leftIsAxis =
+        gridDict.getWordOrDefault("geometry", {"planeStrain", "axisymmetric"}, "planeStrain") == "axisymmetric" &&
+        gridDict.get<Vector2>("origin").x() == 0.0;
+    const Dictionary axis = Dictionary::parse("type symmetry;", sides.name() + "/left");
     std::array<std::unique_ptr<BoundaryCondition>, 4> bcs;
     for (int s = 0; s < 4; ++s) {
         const std::string& side = gridSideNames()[s];
+        if (s == static_cast<int>(GridSide::left) && leftIsAxis) {
+            if (!sides.found(side)) {
+                bcs[s] = Registry<BoundaryCondition>::select(axis, axis, GridSide::left);
+                continue;
+            }
+            const std::string type = sides.subDict(side).get<std::string>("type");
+            if (type != "symmetry" && type != "slip" && type != "fixed")
+                sides.subDict(side).fail("type", "the left side is the axis r = 0 (geometry axisymmetric): it needs "
+                                                 "u_r = 0, not '" + type + "'; valid choices: symmetry (the default), "
+                                                 "slip, fixed");
+        }
         bcs[s] = Registry<BoundaryCondition>::select(sides.subDict(side), sides.subDict(side),
                                                      static_cast<GridSide>(s));
     }

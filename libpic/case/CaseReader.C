@@ -108,6 +108,14 @@ std::unique_ptr<Case> readCase(const RunOptions& options)
     if (c.sortInterval < 0) schemes.fail("sortInterval", "sortInterval must be >= 0 (0: never sort)");
     c.scheme = Registry<UpdateScheme>::select(c.schemeName, schemes, schemes, "updateScheme");
     in.shape = Registry<ShapeFunction>::select(c.shapeName, schemes, schemes, "shapeFunction");
+    if (in.grid.axisymmetric()) {  // what the hoop terms are not yet written for
+        if (!in.shape->servesAxisymmetric())
+            schemes.fail("shapeFunction", "shapeFunction " + c.shapeName + " is not yet available with geometry "
+                                          "axisymmetric (constant/grid); valid choices: bilinear");
+        if (in.cellMeanDilatation)
+            schemes.fail("volumetricStrain", "volumetricStrain cellMean is not yet available with geometry "
+                                             "axisymmetric (constant/grid); valid choices: particle");
+    }
     in.transfer = Registry<ParticleTransfer>::select(transferName, schemes, schemes, "transfer");
 
     std::vector<std::string> storedMaterials, bodyNames;
@@ -133,6 +141,11 @@ std::unique_ptr<Case> readCase(const RunOptions& options)
     }
     in.carryRotation = MpmSolver::needsRotation(dormant, in.materials);
     const bool polar = in.carryRotation || MpmSolver::needsRotation(in.particles, in.materials);
+    if (polar && in.grid.axisymmetric())
+        for (const auto& m : in.materials)
+            if (m->needsRotation())
+                c.materialsDict.fail(m->name(), "material '" + m->name() + "' is polar (Cosserat), not yet "
+                                                "available with geometry axisymmetric (constant/grid)");
 
     c.gravity = readGravity(dir);
     in.gravity = c.gravity;
@@ -204,7 +217,7 @@ std::unique_ptr<Case> readCase(const RunOptions& options)
     }
 
     std::ostringstream why;
-    why << "cell size " << solver.grid().minCellSize() << " m / (wave speed " << solver.maxWaveSpeed()
+    why << "cell size " << solver.stepLength() << " m / (wave speed " << solver.maxWaveSpeed()
         << " m/s + particle speed " << solver.maxParticleSpeed() << " m/s)";
     c.timeControl->checkStable(solver.criticalTimeStep(), why.str());
     return run;

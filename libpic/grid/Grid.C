@@ -66,6 +66,14 @@ Grid::Grid(const Dictionary& dict)
     checkMemory(dict, n[0], n[1]);
     nx_ = n[0];
     ny_ = n[1];
+    // x1 is the radius of a body of revolution: the grid may start on the axis, not across it.
+    axisymmetric_ = dict.getWordOrDefault("geometry", {"planeStrain", "axisymmetric"}, "planeStrain") == "axisymmetric";
+    if (axisymmetric_ && origin_.x() < 0) {
+        std::ostringstream msg;
+        msg << "keyword 'origin' in dictionary " << dict.name() << ": with geometry axisymmetric x1 is the radius "
+            << "r >= 0, but the grid starts at r = " << origin_.x() << "; start it on the axis (origin (0 ...)) or beyond";
+        dict.fail("origin", msg.str());
+    }
     allocate();
 }
 

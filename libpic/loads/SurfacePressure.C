@@ -152,7 +152,8 @@ void SurfacePressure::initialise(const Particles& p, const Grid& grid,
                 << (k0.outer() > 0 ? "beyond" : "short of") << " it (allowed: one cell, " << cellN << " m)";
             fail(msg.str(), line_);
         }
-        length[owner[k]] += b[k + 1] - b[k];
+        // Axisymmetric: the ring's area per radian, the length times the radius of its middle.
+        length[owner[k]] += (b[k + 1] - b[k]) * (grid.axisymmetric() ? 0.5 * (a.x() + z.x()) : 1.0);
     }
 
     loaded_.clear();

@@ -221,7 +221,7 @@ std::optional<StabilityTrip> StabilityGuard::check(double t, long step, double d
     ++checks_;
     const std::size_t n = solver_.particles().size();
     // The limit the next step would meet: exactly MpmSolver::criticalTimeStep().
-    const double h = solver_.grid().minCellSize(), c = solver_.maxWaveSpeed(), vMax = std::sqrt(s.speed2);
+    const double h = solver_.stepLength(), c = solver_.maxWaveSpeed(), vMax = std::sqrt(s.speed2);
     const double limit = h / (c + vMax);
     const bool aboveLimit = !adjustTimeStep_ && fixedDeltaT_ > limit;
     const auto limitText = [&] {
@@ -305,7 +305,7 @@ double StabilityGuard::neededStep(std::size_t q, const Vector2& v) const
 {
     const Particles& p = solver_.particles();
     const double c = isRigid(q) ? 0.0 : solver_.waveSpeed(static_cast<std::size_t>(p.material[q]));
-    return courant_ * solver_.grid().minCellSize() / (c + v.norm());
+    return courant_ * solver_.stepLength() / (c + v.norm());
 }
 
 std::string StabilityGuard::describe(const std::string& what, std::size_t q, double t, long step, double dt) const
@@ -332,7 +332,7 @@ std::string StabilityGuard::describe(const std::string& what, std::size_t q, dou
     os << what << " at time " << t << " s (step " << step << "): particle " << p.id[q] << " of body '" << body
        << "' (material '" << material.name() << "') at " << str(p.x[q]) << " m, velocity " << str(p.v[q])
        << " m/s; it would need deltaT <= " << neededStep(q, v) << " s" << speedNote << " (Courant " << courant_
-       << " x cell " << solver_.grid().minCellSize() << " m / (wave speed " << c << " + speed " << v.norm()
+       << " x cell " << solver_.stepLength() << " m / (wave speed " << c << " + speed " << v.norm()
        << ") m/s), the step was " << dt << " s";
     return os.str();
 }
