@@ -334,3 +334,27 @@ TEST(MaterialDriverTutorial, mohrCoulombOedometerFollowsTheClosedFormOfH54)
         EXPECT_NEAR(-t["sigma22"].back() / 1e6, psiDeg > 0 ? 10.00 : 8.87, 0.01);
     }
 }
+
+// An axisymmetric ring's point: the hoop strain eps33 alone, in the elastic range of every
+// built-in non-polar model, gives sigma33 = (K + 4G/3) eps33 and sigma11 = sigma22 =
+// (K - 2G/3) eps33 (eq. H.2.1 with de33); the same models in plane strain keep eps33 = 0.
+TEST_F(MaterialDriver, theHoopStrainOfAnAxisymmetricRingLoadsEveryModelThroughItsElasticConstants)
+{
+    std::ofstream(dir / "constant/materials")
+        << "FoamFile { version 2.0; format ascii; class dictionary; object materials; }\n"
+           "elastic { type linearElastic; rho 2000; E 1e7; nu 0.3; }\n"
+           "metal   { type vonMises; rho 2000; E 1e7; nu 0.3; sigmaY 1e9; }\n"
+           "corn    { type druckerPrager; rho 2000; E 1e7; nu 0.3; qPhi 0.4; kPhi 1e9; qPsi 0; }\n"
+           "sand    { type mohrCoulomb; rho 2000; E 1e7; nu 0.3; phi 30; c 1e9; }\n";
+    for (const char* material : {"elastic", "metal", "corn", "sand"}) {
+        SCOPED_TRACE(material);
+        writeDict("hoop { path general; eps33 -0.001; steps 10; }\n", std::string("material ") + material + ";\n");
+        run();
+        Table t = result("hoop");
+        const double e = -0.001, scale = alpha1 * 0.001;
+        EXPECT_NEAR(t["sigma33"].back(), alpha1 * e, 1e-9 * scale);
+        EXPECT_NEAR(t["sigma11"].back(), alpha2 * e, 1e-9 * scale);
+        EXPECT_NEAR(t["sigma22"].back(), alpha2 * e, 1e-9 * scale);
+        EXPECT_NEAR(t["sigma12"].back(), 0.0, 1e-9 * scale);
+    }
+}

@@ -94,6 +94,9 @@ void LoadPath::readGeneral(const Dictionary& dict)
             strain_[k] = readStrain(dict, epsKey);
         }
     }
+    // A ring of an axisymmetric scene stretches around the axis: eps33 is then the hoop strain,
+    // imposed (doc/axisymmetric.md); without it the point is in plane strain.
+    if (dict.found("eps33")) strain_[ZZ] = readStrain(dict, "eps33");
     if (dict.found("angle"))
         omega_ = spinOfRotation(readFinite(dict, "angle", "angle in degrees (anticlockwise)"));
 }

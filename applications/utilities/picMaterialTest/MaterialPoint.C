@@ -19,13 +19,13 @@ MaterialPoint::MaterialPoint(const Material& material, const SymTensor& sigma0)
 void MaterialPoint::apply(const SymTensor& dEps, double dOmega, double dt)
 {
     Particles& p = particles_;
-    p.dEps[0] = dEps;
-    p.dEps[0][ZZ] = 0.0;  // plane strain
+    p.dEps[0] = dEps;  // de33: zero in plane strain, the hoop strain of an axisymmetric ring
     p.dOmega[0] = dOmega;
     p.eps[0] += p.dEps[0];
     // Volume follows the deformation as in the solver: det(I + dt L), with
     // dt L12 = dEps12 + dOmega and dt L21 = dEps12 - dOmega.
     p.V[0] *= (1.0 + dEps[XX]) * (1.0 + dEps[YY]) - (dEps[XY] + dOmega) * (dEps[XY] - dOmega);
+    if (dEps[ZZ] != 0.0) p.V[0] *= 1.0 + dEps[ZZ];
     material_->updateStress(p, {0, 1, 0}, dt);
 }
 
