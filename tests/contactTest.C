@@ -6,6 +6,7 @@
 #include "boundaryConditions/FrictionalWall.H"
 #include "contact/ContactLaw.H"
 #include "normals/RigidSurface.H"
+#include "support/BlockOnPlate.H"
 #include "support/CaseRunner.H"
 
 #include <cmath>
@@ -280,28 +281,15 @@ TEST(ContactRestart, aRunWithAContactPassRestartsBitwise)
 
 namespace {
 
-//- An elastic block (60 x 30 mm, E 1 MPa) in its K0 state resting on a fixed rigid plate,
-//  5 mm bilinear cells, MUSL with the seed's FLIP; contact law and normals as given.
+//- The block resting on the fixed plate (support/BlockOnPlate.H); contact law and normals
+//  as given.
 fs::path blockOnPlate(const fs::path& dir, const std::string& contact)
 {
     writeDictionary(dir / "system/controlDict",
                     "endTime 1; deltaT 1; adjustTimeStep yes; maxCourant 0.4;\n"
                     "writeControl runTime; writeInterval 1;\n"
                     "functions { motion { type bodyMotion; writeInterval 100; } }\n");
-    writeDictionary(dir / "system/mpmSchemes", "updateScheme MUSL; shapeFunction bilinear; transfer FLIP;\n");
-    writeDictionary(dir / "constant/grid",
-                    "origin (0 0); cellSize 0.005; nCells (40 20);\n"
-                    "boundaries { left { type free; } right { type free; } bottom { type free; } top { type free; } }\n");
-    writeDictionary(dir / "constant/materials", "gel   { type linearElastic; rho 1000; E 1e6; nu 0.3; }\n"
-                                                "steel { type linearElastic; rho 7800; E 2e8; nu 0.3; }\n");
-    writeDictionary(dir / "constant/bodies",
-                    "plate { material steel; shape { type rectangle; min (0.02 0.01); max (0.18 0.02); } "
-                    "particlesPerCell 2; }\n"
-                    "block { material gel; shape { type rectangle; min (0.07 0.02); max (0.13 0.05); } "
-                    "particlesPerCell 2; initialStress { type geostatic; K0 0.4285714285714286; } }\n");
-    writeDictionary(dir / "constant/rigidBodies", "plate { type fixed; }\n");
-    writeDictionary(dir / "constant/g", "value (0 -9.81);\n");
-    writeDictionary(dir / "constant/contactProperties", contact);
+    writeBlockOnPlate(dir, contact);
     return dir;
 }
 

@@ -16,6 +16,7 @@
 // that starts over the block leaves it, so the mass inside falls as rho H (overlap), the
 // overlap 0.06 m - V t.
 #include "support/Applications.H"
+#include "support/BlockOnPlate.H"
 #include "support/CaseRunner.H"
 
 #include <cmath>
@@ -43,22 +44,9 @@ fs::path slidingBlock(const fs::path& dir, double mu, double endTime, const std:
                "         faces { top { from (0.18 0.02); to (0.02 0.02); } } writeInterval 50; }\n"
                "}\n";
     writeDictionary(dir / "system/controlDict", control.str());
-    writeDictionary(dir / "system/mpmSchemes", "updateScheme MUSL; shapeFunction bilinear; transfer FLIP;\n");
-    writeDictionary(dir / "constant/grid",
-                    "origin (0 0); cellSize 0.005; nCells (40 20);\n"
-                    "boundaries { left { type free; } right { type free; } bottom { type free; } top { type free; } }\n");
-    writeDictionary(dir / "constant/materials", "gel   { type linearElastic; rho 1000; E 1e6; nu 0.3; }\n"
-                                                "steel { type linearElastic; rho 7800; E 2e8; nu 0.3; }\n");
-    writeDictionary(dir / "constant/bodies",
-                    "plate { material steel; shape { type rectangle; min (0.02 0.01); max (0.18 0.02); } "
-                    "particlesPerCell 2; }\n"
-                    "block { material gel; shape { type rectangle; min (0.07 0.02); max (0.13 0.05); } "
-                    "particlesPerCell 2; velocity " + blockVelocity + "; initialStress { type geostatic; K0 0.4285714285714286; } }\n");
-    writeDictionary(dir / "constant/rigidBodies", "plate { " + plate + " }\n");
-    writeDictionary(dir / "constant/g", "value (0 -9.81);\n");
     std::ostringstream contact;
     contact << "law coulombFriction; mu " << mu << "; normals rigidSurface; correctRemapped yes;\n";
-    writeDictionary(dir / "constant/contactProperties", contact.str());
+    writeBlockOnPlate(dir, contact.str(), plate, blockVelocity);
     return dir;
 }
 

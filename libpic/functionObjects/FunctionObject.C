@@ -3,6 +3,7 @@
 #include "core/error.H"
 #include "dictionary/Dictionary.H"
 
+#include <algorithm>
 #include <filesystem>
 
 namespace gpic {
@@ -25,6 +26,20 @@ FunctionObject::FunctionObject(const Dictionary& dict, const RunContext& context
 void FunctionObject::execute(const MpmSolver& solver, double time, long step)
 {
     if (step % writeInterval_ == 0) write(solver, time);
+}
+
+std::vector<int> FunctionObject::bodyIds(const Dictionary& dict, const std::string& keyword) const
+{
+    std::vector<int> ids;
+    const auto& names = context_.bodyNames;
+    for (const auto& n : dict.getOrDefault<std::vector<std::string>>(keyword, {})) {
+        const auto it = std::find(names.begin(), names.end(), n);
+        if (it == names.end())
+            dict.fail(keyword, dict.get<std::string>("type") + " " + name_ + ": '" + n +
+                                   "' is not a body; valid choices: " + choiceList(names));
+        ids.push_back(static_cast<int>(it - names.begin()));
+    }
+    return ids;
 }
 
 std::ofstream& FunctionObject::file(const std::string& fileName)

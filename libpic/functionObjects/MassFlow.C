@@ -21,13 +21,7 @@ MassFlow::MassFlow(const Dictionary& dict, const RunContext& context)
                                     ": the region needs max > min in x1 and x2");
         region_ = std::make_pair(lo, hi);
     }
-    for (const auto& n : dict.getOrDefault<std::vector<std::string>>("bodies", {})) {
-        const auto it = std::find(context.bodyNames.begin(), context.bodyNames.end(), n);
-        if (it == context.bodyNames.end())
-            dict.fail("bodies", "massFlow " + name() + ": '" + n + "' is not a body; valid choices: " +
-                                    choiceList(context.bodyNames));
-        bodies_.push_back(static_cast<int>(it - context.bodyNames.begin()));
-    }
+    bodies_ = bodyIds(dict, "bodies");
 }
 
 double MassFlow::massInRegion(const MpmSolver& solver) const

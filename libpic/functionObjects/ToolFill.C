@@ -23,13 +23,7 @@ ToolFill::ToolFill(const Dictionary& dict, const RunContext& context)
 {
     body_ = static_cast<int>(std::find(context.bodyNames.begin(), context.bodyNames.end(), bodyName_) -
                              context.bodyNames.begin());
-    for (const auto& n : dict.getOrDefault<std::vector<std::string>>("bodies", {})) {
-        const auto it = std::find(context.bodyNames.begin(), context.bodyNames.end(), n);
-        if (it == context.bodyNames.end())
-            dict.fail("bodies", "toolFill " + name() + ": '" + n + "' is not a body; valid choices: " +
-                                    choiceList(context.bodyNames));
-        counted_.push_back(static_cast<int>(it - context.bodyNames.begin()));
-    }
+    counted_ = bodyIds(dict, "bodies");
     // The region's lower-left corner: a point of the body to follow it by.
     reference0_ = reference_ = region_->bounds().first;
     handle_ = reference_ + Vector2::UnitX();

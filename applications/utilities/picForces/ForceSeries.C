@@ -29,6 +29,19 @@ bool parseNumber(const std::string& word, double& value)
 
 } // namespace
 
+std::vector<std::pair<std::string, std::string>> outputFilesOfFunctions(const std::string& caseDir,
+                                                                        const std::string& fileName)
+{
+    std::vector<std::pair<std::string, std::string>> found;
+    std::error_code ec;
+    for (const auto& e : fs::directory_iterator(fs::path(caseDir) / "postProcessing", ec)) {
+        if (!e.is_directory() || e.path().filename() == "picForces") continue;
+        const std::string f = latestOutputFile(e.path(), fileName);
+        if (!f.empty()) found.emplace_back(e.path().filename().string(), f);
+    }
+    return found;
+}
+
 std::string latestOutputFile(const fs::path& functionDir, const std::string& fileName)
 {
     std::error_code ec;
@@ -57,22 +70,14 @@ std::string defaultForcesFile(const std::string& caseDir)
     const fs::path post = fs::path(caseDir) / "postProcessing";
     const std::string preferred = latestOutputFile(post / "forces", "forces.dat");
     if (!preferred.empty()) return preferred;
-    std::vector<std::string> candidates, names;
-    std::error_code ec;
-    for (const auto& e : fs::directory_iterator(post, ec)) {
-        if (!e.is_directory() || e.path().filename() == "picForces") continue;
-        const std::string f = latestOutputFile(e.path(), "forces.dat");
-        if (f.empty()) continue;
-        candidates.push_back(f);
-        names.push_back(e.path().filename().string());
-    }
-    if (candidates.size() == 1) return candidates.front();
-    if (candidates.empty())
+    const auto found = outputFilesOfFunctions(caseDir, "forces.dat");
+    if (found.size() == 1) return found.front().second;
+    if (found.empty())
         throw InputError((post / "forces").string(), 0,
                          "no <time>/forces.dat: add a forces function object to system/controlDict "
                          "(functions { forces { type forces; } }), run the solver, or give -file");
     std::string list;
-    for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
+    for (const auto& f : found) list += (list.empty() ? "" : ", ") + f.first;
     throw InputError(post.string(), 0, "several function objects wrote forces.dat (" + list +
                                            "): choose one with -file postProcessing/<name>/<time>/forces.dat");
 }

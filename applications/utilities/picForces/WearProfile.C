@@ -15,23 +15,15 @@ namespace fs = std::filesystem;
 std::string defaultWearFile(const std::string& caseDir)
 {
     const fs::path post = fs::path(caseDir) / "postProcessing";
-    std::vector<std::string> found, names;
-    std::error_code ec;
-    for (const auto& e : fs::directory_iterator(post, ec)) {
-        if (!e.is_directory() || e.path().filename() == "picForces") continue;
-        const std::string f = latestOutputFile(e.path(), "wearProfile.dat");
-        if (f.empty()) continue;
-        found.push_back(f);
-        names.push_back(e.path().filename().string());
-    }
-    if (found.size() == 1) return found.front();
+    const auto found = outputFilesOfFunctions(caseDir, "wearProfile.dat");
+    if (found.size() == 1) return found.front().second;
     if (found.empty())
         throw InputError(post.string(), 0,
                          "no <time>/wearProfile.dat: add a toolWear function object to system/controlDict "
                          "(functions { wear { type toolWear; body ...; faces { ... } } }), run the solver, or "
                          "give -file");
     std::string list;
-    for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
+    for (const auto& f : found) list += (list.empty() ? "" : ", ") + f.first;
     throw InputError(post.string(), 0, "several function objects wrote a wearProfile.dat (" + list + "): give -file");
 }
 
