@@ -26,6 +26,11 @@ Usage: bucketProfile.py t x0 y0 [-corn width depth]
   -faces  prints the inside faces (tooth tip, floor, corner in 6 chords, back wall, hood
           underside) as `x0 y0 x1 y1` rows, the material on the right (for picForces -surface).
   -rho M  prints instead the density [kg/m^3] that gives the bucket M kg per metre of width.
+  -inside prints instead the bucket's inside (the faces of -faces from the lip on, closed by
+          the mouth from the hood's front to the lip) as a polygon: what it carries (toolFill's
+          region).
+  -tooth L A  a tooth L mm long bent A degrees down (fig. 6.3: 40 mm, 40 deg), for a study of
+          the bucket's geometry (tutorials/studies/bucketGeometry).
   -dat F  also writes the polygon (mm, bucket frame, t = 15 mm) to F for the bucket.png picture.
 """
 import math
@@ -82,6 +87,10 @@ def fmt(pts):
 
 
 def main(argv):
+    global TOOTH, ANGLE
+    if '-tooth' in argv:
+        k = argv.index('-tooth')
+        TOOTH, ANGLE = float(argv[k + 1]), float(argv[k + 2])
     t, x0, y0 = float(argv[1]) * 1e3, float(argv[2]), float(argv[3])
     pts, tip_top, tip_bot, under = outline(t)
     if '-dat' in argv:
@@ -108,6 +117,8 @@ def main(argv):
         q = place(pts, t, 0.0, 0.0)
         area = 0.5 * abs(sum(xa * yb - xb * ya for (xa, ya), (xb, yb) in zip(q, q[1:] + q[:1])))
         print(f'{m / area:.1f}')
+    elif '-inside' in argv:
+        print(fmt(place(inside_faces()[1:], t, x0, y0)))
     elif '-faces' in argv:
         f = place(inside_faces(), t, x0, y0)
         for (xa, ya), (xb, yb) in zip(f[:-1], f[1:]):
