@@ -7,7 +7,7 @@
 //   - solid, radius R, external pressure p: sigma_rr = sigma_tt = -p, sigma_zz = -2 nu p
 //     everywhere, the particles next to the axis included (no spurious hoop force there).
 // The mass of a ring section is rho times int r dr dz: the midpoint rule of picInit's
-// particles is exact for it.
+// particles is exact for it; massFlow reports 2 pi times it, the whole tube's.
 #include "core/error.H"
 #include "support/CaseRunner.H"
 
@@ -27,7 +27,8 @@ fs::path cylinder(const fs::path& dir, double rIn, double rOut, const std::strin
 {
     writeDictionary(dir / "system/controlDict",
                     "endTime 0.12; deltaT 1; adjustTimeStep yes; maxCourant 0.5; damping 0.8;\n"
-                    "writeControl runTime; writeInterval 0.12;\n");
+                    "writeControl runTime; writeInterval 0.12;\n"
+                    "functions { ring { type massFlow; writeInterval 100000; } }\n");
     writeDictionary(dir / "system/mpmSchemes", "updateScheme MUSL; shapeFunction bilinear; transfer FLIP;\n");
     std::ostringstream grid;
     grid << "geometry axisymmetric;\norigin (0 0); cellSize 0.01; nCells (25 4);\n" << extraGrid
@@ -58,6 +59,9 @@ TEST(Axisymmetric, aThickCylinderUnderInternalPressureHasLamesStresses)
     double mass = 0;
     for (double m : s.m) mass += m;
     EXPECT_NEAR(mass, rho * height * (b * b - a * a) / 2, 1e-12 * mass);  // per radian
+    // massFlow reports the whole revolution: the tube's mass rho pi (b^2 - a^2) H.
+    const auto ring = readColumns(dir / "postProcessing/ring/0/massFlow.dat");
+    EXPECT_NEAR(ring.at("mass").front(), rho * M_PI * (b * b - a * a) * height, 1e-9 * mass);
 
     // Compared as the mean of each column of cells (its 2 x 8 particles at its mean radius):
     // a particle's own stress alternates about it from one particle to the next (the 2 x 2

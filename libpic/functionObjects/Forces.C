@@ -61,11 +61,16 @@ void Forces::start(const MpmSolver& solver, double)
     std::ofstream& os = file("forces.dat");
     os << "# force of the material on each body [N/m], its moment about CofR (" << CofR_.x() << ' '
        << CofR_.y() << ") [N m/m] and the body's mean displacement [m]; forces on faces [N/m]; the work "
-          "each body has done on the material [J/m]\n# time";
+          "each body has done on the material [J/m]"
+       << (solver.grid().axisymmetric() ? "; all per radian, then the axial force of the revolution [N]" : "")
+       << "\n# time";
     for (int b : bodies_)
         for (const char* c : {"Fx", "Fy", "Mz", "dx", "dy"}) os << ' ' << all[b] << ':' << c;
     for (const auto& face : faces_) os << ' ' << face.name << ":Fx " << face.name << ":Fy";
     for (int b : bodies_) os << ' ' << all[b] << ":W";
+    axisymmetric_ = solver.grid().axisymmetric();
+    if (axisymmetric_)
+        for (int b : bodies_) os << ' ' << all[b] << ":Faxial";
     os << std::endl;
 }
 
@@ -103,6 +108,11 @@ void Forces::write(const MpmSolver& solver, double time)
         os << ' ' << F.x() << ' ' << F.y();
     }
     for (double w : work_) os << ' ' << w;
+    if (axisymmetric_)
+        for (int b : bodies_) {
+            const auto k = static_cast<std::size_t>(b);
+            os << ' ' << 2.0 * M_PI * (k < loads.size() ? loads[k].force.y() : 0.0);
+        }
     os << std::endl;  // readable while the run goes on
 }
 

@@ -28,6 +28,12 @@ void FunctionObject::execute(const MpmSolver& solver, double time, long step)
     if (step % writeInterval_ == 0) write(solver, time);
 }
 
+std::optional<double> FunctionObject::readFactor(const Dictionary& dict)
+{
+    if (!dict.found("factor")) return std::nullopt;
+    return dict.getChecked<double>("factor", [](const double& f) { return f > 0; }, "factor > 0");
+}
+
 std::vector<int> FunctionObject::bodyIds(const Dictionary& dict, const std::string& keyword) const
 {
     std::vector<int> ids;

@@ -11,8 +11,7 @@ GPIC_REGISTER(FunctionObject, MassFlow, "massFlow")
 
 MassFlow::MassFlow(const Dictionary& dict, const RunContext& context)
     : FunctionObject(dict, context),
-      factor_(dict.found("factor") ? dict.getChecked<double>("factor", [](const double& f) { return f > 0; }, "factor > 0")
-                                   : 1.0)
+      givenFactor_(readFactor(dict))
 {
     if (const Dictionary* region = dict.subDictPtr("region")) {
         const Vector2 lo = region->get<Vector2>("min"), hi = region->get<Vector2>("max");
@@ -42,15 +41,17 @@ double MassFlow::massInRegion(const MpmSolver& solver) const
 
 void MassFlow::start(const MpmSolver& solver, double time)
 {
+    factor_ = rowFactor(givenFactor_, solver.grid());
     std::ofstream& os = file("massFlow.dat");
     os << "# mass in the region [kg], mass gone through the outlets [kg], outflow rate [kg/s], "
-          "drain rate of the region [kg/s]; masses per metre of thickness times factor "
-       << factor_ << "\n# time mass out outflowRate drainRate\n";
+          "drain rate of the region [kg/s]; masses per "
+       << (solver.grid().axisymmetric() ? "radian" : "metre of thickness") << " times factor " << factor_
+       << "\n# time mass out outflowRate drainRate\n";
     if (restarted()) return;  // the rates go on from the restored last row
     lastTime_ = time;
     lastRemoved_ = factor_ * solver.removedMass();
     lastMass_ = massInRegion(solver);
-    os << time << ' ' << lastMass_ << ' ' << lastRemoved_ << " 0 0\n";
+    os << time << ' ' << lastMass_ << ' ' << lastRemoved_ << " 0 0" << std::endl;  // readable while the run goes on
 }
 
 void MassFlow::writeState(std::ostream& os) const

@@ -15,9 +15,7 @@ ToolFill::ToolFill(const Dictionary& dict, const RunContext& context)
     : FunctionObject(dict, context),
       bodyName_(dict.getWord("body", context.bodyNames)),
       region_(Shape::New(dict.subDict("region"))),
-      factor_(dict.found("factor")
-                  ? dict.getChecked<double>("factor", [](const double& f) { return f > 0; }, "factor > 0")
-                  : 1.0),
+      givenFactor_(readFactor(dict)),
       file_(dict.fileName()),
       line_(dict.lineOf("body"))
 {
@@ -34,8 +32,10 @@ void ToolFill::start(const MpmSolver& solver, double time)
     if (!solver.rigidBody(body_))
         throw InputError(file_, line_, "toolFill " + name() + ": '" + bodyName_ +
                                            "' is not a rigid body (constant/rigidBodies)");
+    factor_ = rowFactor(givenFactor_, solver.grid());
     std::ofstream& os = file("fill.dat");
-    os << "# mass inside the region fixed to '" << bodyName_ << "' [kg/m times factor " << factor_
+    os << "# mass inside the region fixed to '" << bodyName_ << "' [kg per "
+       << (solver.grid().axisymmetric() ? "radian" : "metre") << " times factor " << factor_
        << "], its displacement [m], the path length it has travelled [m] and its rotation [deg]\n"
           "# time mass dx dy travel rotation\n";
     if (!restarted()) write(solver, time);

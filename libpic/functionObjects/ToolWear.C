@@ -73,6 +73,7 @@ void ToolWear::start(const MpmSolver& solver, double time)
                                            "fields with a frictional law (constant/contactProperties: law "
                                            "coulombFriction)");
     if (resolution_ == 0.0) resolution_ = solver.grid().cellSize().maxCoeff();
+    axisymmetric_ = solver.grid().axisymmetric();
     for (auto& face : faces_) {
         const auto bins = static_cast<std::size_t>(std::max(1.0, std::ceil((face.to - face.from).norm() / resolution_ - 1e-9)));
         if (!restarted() || face.volume.size() != bins) face.volume.assign(bins, 0.0);
@@ -148,11 +149,12 @@ void ToolWear::write(const MpmSolver&, double time)
         double volume = 0, deepest = 0;
         for (std::size_t b = 0; b < face.volume.size(); ++b) {
             volume += face.volume[b];
-            deepest = std::max(deepest, face.volume[b] / binLength);
             const double s = (static_cast<double>(b) + 0.5) * binLength;
             const Vector2 x = face.from + s / length * (face.to - face.from);
-            profile << time << ' ' << k << ' ' << s << ' ' << x.x() << ' ' << x.y() << ' '
-                    << face.volume[b] / binLength << '\n';
+            // Axisymmetric: the bin's volume per radian covers its length times its radius.
+            const double depth = face.volume[b] / (binLength * (axisymmetric_ ? x.x() : 1.0));
+            deepest = std::max(deepest, depth);
+            profile << time << ' ' << k << ' ' << s << ' ' << x.x() << ' ' << x.y() << ' ' << depth << '\n';
         }
         os << ' ' << deepest << ' ' << volume;
     }
