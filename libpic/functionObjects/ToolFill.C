@@ -41,10 +41,8 @@ void ToolFill::start(const MpmSolver& solver, double time)
     if (!restarted()) write(solver, time);
 }
 
-Vector2 ToolFill::atStart(const Vector2& x) const
+Vector2 ToolFill::atStart(const Vector2& x, double c, double s) const
 {
-    const Vector2 e = handle_ - reference_;
-    const double c = e.x() / e.norm(), s = e.y() / e.norm();  // the turn since the start
     const Vector2 r = x - reference_;
     return reference0_ + Vector2(c * r.x() + s * r.y(), -s * r.x() + c * r.y());
 }
@@ -61,13 +59,15 @@ void ToolFill::at(StepPoint, const MpmSolver& solver)
 void ToolFill::write(const MpmSolver& solver, double time)
 {
     const Particles& p = solver.particles();
+    const Vector2 e = handle_ - reference_;
+    const double c = e.x() / e.norm(), s = e.y() / e.norm();  // the turn since the start
     double mass = 0;
     for (std::size_t q = 0; q < p.size(); ++q) {
         const bool counted = counted_.empty() ? solver.rigidBody(p.body[q]) == nullptr
                                               : std::find(counted_.begin(), counted_.end(), p.body[q]) != counted_.end();
-        if (counted && region_->inside(atStart(p.x[q]))) mass += p.m[q];
+        if (counted && region_->inside(atStart(p.x[q], c, s))) mass += p.m[q];
     }
-    const Vector2 d = reference_ - reference0_, e = handle_ - reference_;
+    const Vector2 d = reference_ - reference0_;
     std::ofstream& os = file("fill.dat");
     os << time << ' ' << factor_ * mass << ' ' << d.x() << ' ' << d.y() << ' ' << travel_ << ' '
        << std::atan2(e.y(), e.x()) * 180.0 / M_PI << std::endl;
