@@ -243,11 +243,13 @@ void Simulation::stop(const std::optional<StabilityTrip>& trip, const std::strin
             if (onDisk_.step != step_) write();
         } else if (const GoodState& good = guard_->lastGood(); good.step > onDisk_.step) {
             const std::string name = timeDirectoryName(good.time);
-            writeState(good.particles(), good.time, good.step, good.deltaT, good.removedMass, name);
+            Particles particles = good.particles();  // read back once, for both files
+            writeState(particles, good.time, good.step, good.deltaT, good.removedMass, name);
             PvdCollection pvd(pvdPath(options_.caseDir));
             pvd.add(good.time, name + "/particles.vtp", 0);
             if (case_->writeGrid) {
-                writeGoodStateGrid(good, (fs::path(options_.caseDir) / name / "grid.vti").string());
+                writeGoodStateGrid(std::move(particles), good.time,
+                                   (fs::path(options_.caseDir) / name / "grid.vti").string());
                 pvd.add(good.time, name + "/grid.vti", 1);
             }
             pvd.write();
@@ -261,20 +263,20 @@ void Simulation::stop(const std::optional<StabilityTrip>& trip, const std::strin
     throw RunError((trip ? trip->message : solverMessage) + where.str());
 }
 
-void Simulation::writeGoodStateGrid(const GoodState& good, const std::string& path)
+void Simulation::writeGoodStateGrid(Particles particles, double time, const std::string& path)
 {
     // The run ends here: the engine may take the good state's particles to project them.
     if (!solver_.hasLoads()) {
-        solver_.replaceParticles(good.particles());
-        solver_.setTime(good.time);
+        solver_.replaceParticles(std::move(particles));
+        solver_.setTime(time);
         solver_.projectToGrid();
-        writeGrid(path, solver_.grid(), good.time);
+        writeGrid(path, solver_.grid(), time);
         return;
     }
     // Loads hold particle indices: the grid's place and size, with empty fields.
     Grid empty = solver_.grid();
     empty.resetFields();
-    writeGrid(path, empty, good.time);
+    writeGrid(path, empty, time);
 }
 
 long Simulation::run()
