@@ -1,6 +1,7 @@
 // The surfacePressure load (constant/loads): which particles carry a pressure on a segment of
 // a body's surface, that their forces add up to p times the segment length along the inward
-// normal, that bad segments are refused with the file, line and what is wrong, and that an
+// normal, that an arc or a polyline is loaded piece by piece (the resultant of a pressure
+// inside a quarter ring, plane strain and axisymmetric), that bad segments are refused with the file, line and what is wrong, and that an
 // elastic column loaded over its whole top settles to the one-dimensional (oedometric)
 // state of plane strain:
 //     sigma22 = -p,   sigma11 = sigma33 = nu/(1 - nu) sigma22,   eps22 = -p / (K + 4G/3).
@@ -112,6 +113,67 @@ TEST(SurfacePressure, segmentsOffTheSurfaceAreRefused)
     EXPECT_NE(overhang.find("leaves body 'block' between (1 0.5) and (1.3 0.5)"), std::string::npos) << overhang;
     const std::string point = refusal(head + "body block; from (0.5 0.5); to (0.5 0.5); }", block);
     EXPECT_NE(point.find("zero length"), std::string::npos) << point;
+}
+
+//- A quarter ring (a = 0.1, b = 0.2 m about the origin) of 2 x 2 particles per 0.01 m cell.
+struct QuarterRing : Block {
+    QuarterRing(bool axisymmetric)
+    {
+        grid = Grid(Vector2(0, 0), Vector2(0.01, 0.01), 25, 25);
+        grid.setAxisymmetric(axisymmetric);
+        bodies = {"shell"};
+        p = Particles();
+        for (int j = 0; j < 50; ++j)
+            for (int i = 0; i < 50; ++i) {
+                const Vector2 x(0.0025 + 0.005 * i, 0.0025 + 0.005 * j);
+                if (x.norm() >= 0.1 && x.norm() <= 0.2) p.add(x, 1.0, 2.5e-5, Vector2(0.0025, 0.0025), 0, 0);
+            }
+    }
+};
+
+TEST(SurfacePressure, anArcOrAPolylineIsLoadedPieceByPiece)
+{
+    // The inside of the quarter ring: the pressure pushes the body away from the centre.
+    const QuarterRing plane(false), axisymmetric(true);
+    const std::string arc = "pad { type surfacePressure; body shell; pressure 1e3; "
+                            "arc { centre (0 0); radius 0.1; startAngle 0; endAngle 90; } }";
+    // Plane strain: p R (1, 1), the integral of the inward normal over the arc (exact on chords).
+    auto flat = load(arc, plane);
+    EXPECT_NEAR((totalForce(*flat, plane.p, 0.0) - Vector2(100, 100)).norm(), 0, 1e-9);
+    const auto& loaded = static_cast<const SurfacePressure&>(*flat);
+    for (std::size_t k = 0; k < loaded.loaded().size(); ++k) {
+        const Vector2 x = plane.p.x[loaded.loaded()[k]];
+        EXPECT_LT(x.norm(), 0.1 + 0.01) << "a loaded particle away from the arc";
+        EXPECT_LT(loaded.outwardNormals()[k].dot(x.normalized()), -0.99);  // towards the centre
+    }
+    // Axisymmetric rings: p R^2 (pi/4, 1/2) per radian, to the chords' 1-degree error.
+    auto rings = load(arc, axisymmetric);
+    const Vector2 f = totalForce(*rings, axisymmetric.p, 0.0);
+    EXPECT_NEAR(f.x(), 1e3 * 0.01 * M_PI / 4, 1e-4 * f.x());
+    EXPECT_NEAR(f.y(), 1e3 * 0.01 / 2, 1e-4 * f.y());
+
+    // A polyline along the ring's two straight ends: the bottom (z = 0) and the axis side.
+    auto ends = load("pad { type surfacePressure; body shell; pressure 1e3; "
+                     "points ((0.2 0) (0.1 0)); }", plane);
+    EXPECT_NEAR((totalForce(*ends, plane.p, 0.0) - Vector2(0, 100)).norm(), 0, 1e-9);
+    auto corner = load("pad { type surfacePressure; body shell; pressure 1e3; "
+                       "points ((0.2 0) (0.1 0) (0.1 0.02)); }", plane);
+    // 0.1 m of the bottom pushed up, then 0.02 m of the inner side pushed in +x: below
+    // y = 0.02 the particles next to x = 0.1 have their faces on that line.
+    const Vector2 g = totalForce(*corner, plane.p, 0.0);
+    EXPECT_NEAR(g.y(), 100, 1e-9);
+    EXPECT_NEAR(g.x(), 20, 1e-9);
+
+    // Exactly one loaded part, and no zero-length piece.
+    const std::string both = refusal("pad { type surfacePressure; body shell; pressure 1; from (0 0.1); to (0.1 0); "
+                                     "points ((0.2 0) (0.1 0)); }", plane);
+    EXPECT_NE(both.find("exactly one loaded part"), std::string::npos) << both;
+    const std::string repeated = refusal("pad { type surfacePressure; body shell; pressure 1; "
+                                         "points ((0.2 0) (0.2 0) (0.1 0)); }", plane);
+    EXPECT_NE(repeated.find("zero length"), std::string::npos) << repeated;
+    const std::string turn = refusal("pad { type surfacePressure; body shell; pressure 1; "
+                                     "arc { centre (0 0); radius 0.1; startAngle 0; endAngle 0; } }", plane);
+    EXPECT_NE(turn.find("endAngle"), std::string::npos) << turn;
 }
 
 TEST(SurfacePressure, loadedColumnSettlesToTheOedometricState)

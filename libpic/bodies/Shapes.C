@@ -3,6 +3,7 @@
 
 #include "dictionary/Dictionary.H"
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -39,6 +40,67 @@ public:
 private:
     Vector2 centre_;
     double radius_;
+};
+
+//- The ring between two radii, or a sector of it (angles in degrees from the x1 axis,
+//  counter-clockwise from startAngle to endAngle): a pipe, a dome, a thick sphere's section.
+class AnnulusShape : public Shape {
+public:
+    explicit AnnulusShape(const Dictionary& d)
+        : centre_(d.get<Vector2>("centre")),
+          inner_(d.getOrDefault<double>("innerRadius", 0.0)),
+          outer_(d.get<double>("outerRadius")),
+          start_(d.getOrDefault<double>("startAngle", 0.0)),
+          end_(d.getOrDefault<double>("endAngle", start_ + 360.0))
+    {
+        if (!(inner_ >= 0)) d.fail("innerRadius", "innerRadius must be >= 0");
+        if (!(outer_ > inner_)) d.fail("outerRadius", "outerRadius must exceed innerRadius");
+        if (!(end_ > start_ && end_ - start_ <= 360))
+            d.fail("endAngle", "endAngle must exceed startAngle by at most 360 degrees");
+    }
+    bool inside(const Vector2& x) const override
+    {
+        const Vector2 r = x - centre_;
+        const double rho = r.norm();
+        if (rho < inner_ || rho > outer_) return false;
+        if (end_ - start_ >= 360 || rho == 0) return true;
+        return turnFromStart(std::atan2(r.y(), r.x()) * 180 / M_PI) <= end_ - start_ + angleSlack;
+    }
+    std::pair<Vector2, Vector2> bounds() const override
+    {
+        // The sector's ends at both radii and the outer radius at every axis direction it spans.
+        const auto at = [&](double radius, double degrees) {
+            const double a = degrees * M_PI / 180;
+            return Vector2(centre_ + radius * Vector2(std::cos(a), std::sin(a)));
+        };
+        std::vector<Vector2> extreme{at(inner_, start_), at(outer_, start_), at(inner_, end_), at(outer_, end_)};
+        for (int k = 0; k < 4; ++k)
+            if (turnFromStart(90.0 * k) <= end_ - start_) extreme.push_back(at(outer_, 90.0 * k));
+        Vector2 lo = extreme[0], hi = extreme[0];
+        for (const auto& p : extreme) {
+            lo = lo.cwiseMin(p);
+            hi = hi.cwiseMax(p);
+        }
+        // An axis direction's cosine is not exactly 0: no 6e-18 beyond a grid line.
+        const double zero = 1e-12 * outer_;
+        for (int i = 0; i < 2; ++i) {
+            if (std::abs(lo[i] - centre_[i]) < zero) lo[i] = centre_[i];
+            if (std::abs(hi[i] - centre_[i]) < zero) hi[i] = centre_[i];
+        }
+        return {lo, hi};
+    }
+
+private:
+    static constexpr double angleSlack = 1e-9;  //- degrees: a point on an end line is inside
+    Vector2 centre_;
+    double inner_, outer_, start_, end_;
+
+    //- How far `degrees` lies counter-clockwise from startAngle, in [0, 360).
+    double turnFromStart(double degrees) const
+    {
+        const double turn = std::fmod(degrees - start_ + angleSlack, 360.0);
+        return (turn < 0 ? turn + 360.0 : turn) - angleSlack;
+    }
 };
 
 class PolygonShape : public Shape {
@@ -101,5 +163,6 @@ private:
 GPIC_REGISTER(Shape, RectangleShape, "rectangle")
 GPIC_REGISTER(Shape, CircleShape, "circle")
 GPIC_REGISTER(Shape, PolygonShape, "polygon")
+GPIC_REGISTER(Shape, AnnulusShape, "annulus")
 
 } // namespace gpic

@@ -38,18 +38,43 @@ struct Candidate {
 SurfacePressure::SurfacePressure(const Dictionary& dict)
     : name_(dict.name()),
       file_(dict.fileName()),
-      line_(dict.lineOf("from")),
       bodyLine_(dict.lineOf("body")),
       bodyName_(dict.get<std::string>("body")),
-      from_(dict.get<Vector2>("from")),
-      to_(dict.get<Vector2>("to")),
       p_(TimeFunction::read(dict, "pressure")),
       rampTime_(dict.found("rampTime")
                     ? dict.getChecked<double>("rampTime", [](const double& t) { return t >= 0; }, "rampTime >= 0")
                     : 0.0)
 {
-    if (!((to_ - from_).norm() > 0))
-        dict.fail("to", "the loaded segment of " + name_ + " has zero length: from and to are both " + str(from_));
+    const int given = int(dict.found("from") || dict.found("to")) + int(dict.found("points")) + int(dict.found("arc"));
+    if (given != 1)
+        dict.fail(dict.found("points") ? "points" : dict.found("arc") ? "arc" : "from",
+                  name_ + " needs exactly one loaded part: from and to (a segment), points (a polyline) "
+                          "or arc { centre; radius; startAngle; endAngle; }");
+    if (dict.found("points")) {
+        line_ = dict.lineOf("points");
+        points_ = dict.get<std::vector<Vector2>>("points");
+        if (points_.size() < 2) dict.fail("points", "the polyline of " + name_ + " needs at least 2 points");
+    } else if (const Dictionary* arc = dict.subDictPtr("arc")) {
+        line_ = dict.lineOf("arc");
+        const Vector2 centre = arc->get<Vector2>("centre");
+        const double R = arc->getChecked<double>("radius", [](const double& r) { return r > 0; }, "radius > 0");
+        const double a0 = arc->get<double>("startAngle"), a1 = arc->get<double>("endAngle");
+        if (!(std::abs(a1 - a0) > 0 && std::abs(a1 - a0) <= 360))
+            arc->fail("endAngle", "the arc of " + name_ + " must turn by more than 0 and at most 360 degrees "
+                                  "from startAngle to endAngle");
+        const int chords = static_cast<int>(std::ceil(std::abs(a1 - a0)));  // at most 1 degree each
+        for (int k = 0; k <= chords; ++k) {
+            const double a = (a0 + (a1 - a0) * k / chords) * M_PI / 180;
+            points_.push_back(centre + R * Vector2(std::cos(a), std::sin(a)));
+        }
+    } else {
+        line_ = dict.lineOf("from");
+        points_ = {dict.get<Vector2>("from"), dict.get<Vector2>("to")};
+    }
+    for (std::size_t k = 1; k < points_.size(); ++k)
+        if (!((points_[k] - points_[k - 1]).norm() > 0))
+            dict.fail(dict.found("points") ? "points" : "to",
+                      "the loaded segment of " + name_ + " has zero length: from and to are both " + str(points_[k]));
 }
 
 void SurfacePressure::fail(const std::string& message, int line) const
@@ -73,10 +98,41 @@ void SurfacePressure::initialise(const Particles& p, const Grid& grid,
         fail("body '" + bodyName_ + "' is not a body of constant/bodies; valid choices: " + valid, bodyLine_);
     }
     const int body = static_cast<int>(it - bodyNames.begin());
-    const std::string segment = "the segment from " + str(from_) + " to " + str(to_);
 
-    const double L = (to_ - from_).norm();
-    const Vector2 t = (to_ - from_) / L;
+    std::vector<LoadedPiece> entries;
+    double L = 0;
+    for (std::size_t k = 1; k < points_.size(); ++k) {
+        loadSegment(points_[k - 1], points_[k], k - 1, p, grid, body, entries);
+        L += (points_[k] - points_[k - 1]).norm();
+    }
+    std::stable_sort(entries.begin(), entries.end(), [](const LoadedPiece& a, const LoadedPiece& z) { return a.q < z.q; });
+    loaded_.clear();
+    lengths_.clear();
+    normals_.clear();
+    for (const LoadedPiece& e : entries) {
+        loaded_.push_back(e.q);
+        lengths_.push_back(e.length);
+        normals_.push_back(e.normal);
+    }
+    std::vector<std::size_t> distinct(loaded_);
+    distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
+    info() << "Load " << name_ << ": pressure on " << distinct.size() << " particles of body " << bodyName_
+           << " along " << L << " m";
+    if (points_.size() == 2)
+        info() << ", outward normal " << str(normals_.front()) << '\n';
+    else
+        info() << " in " << points_.size() - 1 << " pieces\n";
+}
+
+void SurfacePressure::loadSegment(const Vector2& from, const Vector2& to, std::size_t piece, const Particles& p,
+                                  const Grid& grid, int body, std::vector<LoadedPiece>& entries) const
+{
+    const std::string segment = points_.size() == 2
+        ? "the segment from " + str(from) + " to " + str(to)
+        : "piece " + std::to_string(piece + 1) + " of the polyline (from " + str(from) + " to " + str(to) + ")";
+
+    const double L = (to - from).norm();
+    const Vector2 t = (to - from) / L;
     Vector2 n(-t.y(), t.x());
     // Sizes along a direction of the axis-aligned particle domains and cells.
     const auto along = [](const Vector2& dir, const Vector2& half) {
@@ -88,7 +144,7 @@ void SurfacePressure::initialise(const Particles& p, const Grid& grid,
     double narrowest = L;
     for (std::size_t q = 0; q < p.size(); ++q) {
         if (p.body[q] != body) continue;
-        const Vector2 r = p.x[q] - from_;
+        const Vector2 r = p.x[q] - from;
         const double s = r.dot(t), halfT = along(t, p.halfSize[q]);
         if (s + halfT <= 0 || s - halfT >= L) continue;
         c.push_back({q, s - halfT, s + halfT, r.dot(n), along(n, p.halfSize[q])});
@@ -109,7 +165,7 @@ void SurfacePressure::initialise(const Particles& p, const Grid& grid,
         n = -n;
         for (auto& k : c) k.d = -k.d;
     }
-    normalOut_ = Vector2(n.x() + 0.0, n.y() + 0.0);  // + 0.0: no '-0' in messages
+    const Vector2 normalOut(n.x() + 0.0, n.y() + 0.0);  // + 0.0: no '-0' in messages
 
     // Cut the segment where particle domains begin and end (ends closer than a round-off
     // tolerance merged), then give each piece to the outermost particle covering it.
@@ -140,7 +196,7 @@ void SurfacePressure::initialise(const Particles& p, const Grid& grid,
 
     std::vector<double> length(c.size(), 0.0);
     for (std::size_t k = 0; k < pieces; ++k) {
-        const Vector2 a = from_ + b[k] * t, z = from_ + b[k + 1] * t;
+        const Vector2 a = from + b[k] * t, z = from + b[k + 1] * t;
         if (owner[k] < 0)
             fail(segment + " leaves body '" + bodyName_ + "' between " + str(a) + " and " + str(z) +
                  ": every point of a loaded segment must lie on the body's surface", line_);
@@ -156,25 +212,15 @@ void SurfacePressure::initialise(const Particles& p, const Grid& grid,
         length[owner[k]] += (b[k + 1] - b[k]) * (grid.axisymmetric() ? 0.5 * (a.x() + z.x()) : 1.0);
     }
 
-    loaded_.clear();
-    lengths_.clear();
-    std::vector<std::size_t> order;
     for (std::size_t i = 0; i < c.size(); ++i)
-        if (length[i] > 0) order.push_back(i);
-    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t z) { return c[a].q < c[z].q; });
-    for (std::size_t i : order) {
-        loaded_.push_back(c[i].q);
-        lengths_.push_back(length[i]);
-    }
-    info() << "Load " << name_ << ": pressure on " << loaded_.size() << " particles of body "
-              << bodyName_ << " along " << L << " m, outward normal " << str(normalOut_) << '\n';
+        if (length[i] > 0) entries.push_back({c[i].q, length[i], normalOut});
 }
 
 void SurfacePressure::addForces(double t, const Particles&, std::vector<Vector2>& force) const
 {
     // Compression positive: the pressure pushes against the outward normal.
-    const Vector2 perLength = -pressure(t) * normalOut_;
-    for (std::size_t k = 0; k < loaded_.size(); ++k) force[loaded_[k]] += lengths_[k] * perLength;
+    const double pt = pressure(t);
+    for (std::size_t k = 0; k < loaded_.size(); ++k) force[loaded_[k]] += lengths_[k] * (-pt * normals_[k]);
 }
 
 void SurfacePressure::renumber(const std::vector<std::size_t>& newIndex)
@@ -186,10 +232,12 @@ void SurfacePressure::renumber(const std::vector<std::size_t>& newIndex)
         if (q == removedParticle) continue;
         loaded_[kept] = q;
         lengths_[kept] = lengths_[k];
+        normals_[kept] = normals_[k];
         ++kept;
     }
     loaded_.resize(kept);
     lengths_.resize(kept);
+    normals_.resize(kept);
 }
 
 } // namespace gpic
