@@ -20,5 +20,9 @@ set xlabel 'wall time [s]'
 set ylabel 'error [%]'
 set title 'Thick-walled cylinder: error against run time'
 set key top right
-plot 'errors.dat' using 4:5 with linespoints pt 7 lw 2 title 'stress, % of p', \
-     'errors.dat' using 4:(abs($6)) with linespoints pt 5 lw 2 title 'inner displacement, % of u'
+axi(c) = strcol(8) eq 'plane' ? NaN : column(c)
+plane(c) = strcol(8) eq 'plane' ? column(c) : NaN
+plot 'errors.dat' using 4:(axi(5)) with linespoints pt 7 lw 2 lc rgb 'blue' title 'axisymmetric: stress, % of p', \
+     'errors.dat' using 4:(abs(axi(6))) with linespoints pt 5 lw 2 lc rgb 'red' title 'axisymmetric: inner displacement, % of u', \
+     'errors.dat' using 4:(plane(5)) with linespoints pt 6 lw 2 dt 2 lc rgb 'blue' title 'plane strain: stress', \
+     'errors.dat' using 4:(abs(plane(6))) with linespoints pt 4 lw 2 dt 2 lc rgb 'red' title 'plane strain: inner displacement'
