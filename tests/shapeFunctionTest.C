@@ -189,3 +189,56 @@ TEST(ShapeFunctions, quadraticBSplineIsLinearAcrossAnAxisOfOneCell)
         EXPECT_NEAR(sumY, q == 0 ? 0.1 : 0.45, 1e-12);
     }
 }
+
+// Axisymmetric uGIMP (Nairn & Guilkey 2015): the weights are averages over the particle's
+// ring, weighted by r. They still sum to one and reproduce the ring's centroid
+// int r^2 dr / int r dr; the radial gradients reproduce d r / d r = 1; the hoop weights
+// <N_i / r> sum to the inverse mean radius and reproduce <r / r> = 1. Near the axis the ring
+// is cut at r = 0. Far from the axis the weights tend to plane strain's.
+TEST(ShapeFunctions, axisymmetricUGimpAveragesOverTheRing)
+{
+    Grid grid(Vector2(0, 0), Vector2(0.1, 0.1), 10, 10);
+    grid.setAxisymmetric(true);
+    const double l = 0.025;  // 2 x 2 particles per cell
+    // Inside, next to the axis (the domain touches it), across a face, and across the axis.
+    const std::vector<Vector2> xs{{0.437, 0.52}, {0.025, 0.31}, {0.098, 0.66}, {0.01, 0.4}};
+    const ShapeWeights w = weightsAt("uGIMP", grid, xs);
+    ASSERT_EQ(w.hoop.size(), w.N.size());
+    for (std::size_t q = 0; q < xs.size(); ++q) {
+        const double r1 = std::max(xs[q].x() - l, 0.0), r2 = xs[q].x() + l;
+        const double ring = 0.5 * (r2 * r2 - r1 * r1);
+        double sumN = 0, sumT = 0, rN = 0, rT = 0, rG = 0, zN = 0;
+        Vector2 sumGrad = Vector2::Zero();
+        for (int a = 0; a < w.stride; ++a) {
+            const std::size_t k = q * w.stride + a;
+            if (w.node[k] < 0) continue;
+            const Vector2 xi = grid.nodePosition(w.node[k]);
+            sumN += w.N[k];
+            sumT += w.hoop[k];
+            sumGrad += w.dN[k];
+            rN += w.N[k] * xi.x();
+            rT += w.hoop[k] * xi.x();
+            rG += w.dN[k].x() * xi.x();
+            zN += w.N[k] * xi.y();
+        }
+        EXPECT_NEAR(sumN, 1.0, 1e-12) << q;
+        EXPECT_NEAR(sumT, (r2 - r1) / ring, 1e-9 * sumT) << q;   // 1 / mean radius of the ring
+        EXPECT_NEAR(rN, (r2 * r2 * r2 - r1 * r1 * r1) / 3 / ring, 1e-12) << q;
+        EXPECT_NEAR(rT, 1.0, 1e-12) << q;
+        EXPECT_NEAR(rG, 1.0, 1e-12) << q;
+        EXPECT_NEAR(sumGrad.y(), 0.0, 1e-10) << q;
+        EXPECT_NEAR(zN, xs[q].y(), 1e-12) << q;
+        EXPECT_NEAR(sumGrad.x(), 0.0, 1e-10) << q;
+    }
+    // The same particle 300 cells out: N and r_p T_i within 1e-4 of plane strain's N.
+    Grid far(Vector2(0, 0), Vector2(0.1, 0.1), 400, 10);
+    far.setAxisymmetric(true);
+    Grid flat(Vector2(0, 0), Vector2(0.1, 0.1), 400, 10);
+    const ShapeWeights ringW = weightsAt("uGIMP", far, {{30.437, 0.52}});
+    const ShapeWeights flatW = weightsAt("uGIMP", flat, {{30.437, 0.52}});
+    for (int a = 0; a < ringW.stride; ++a) {
+        EXPECT_NEAR(ringW.N[a], flatW.N[a], 1e-4);
+        EXPECT_NEAR(ringW.hoop[a] * 30.437, flatW.N[a], 1e-4);
+    }
+    EXPECT_TRUE(flatW.hoop.empty());
+}

@@ -111,7 +111,7 @@ std::unique_ptr<Case> readCase(const RunOptions& options)
     if (in.grid.axisymmetric()) {  // what the hoop terms are not yet written for
         if (!in.shape->servesAxisymmetric())
             schemes.fail("shapeFunction", "shapeFunction " + c.shapeName + " is not yet available with geometry "
-                                          "axisymmetric (constant/grid); valid choices: bilinear");
+                                          "axisymmetric (constant/grid); valid choices: bilinear, uGIMP");
         if (in.cellMeanDilatation)
             schemes.fail("volumetricStrain", "volumetricStrain cellMean is not yet available with geometry "
                                              "axisymmetric (constant/grid); valid choices: particle");

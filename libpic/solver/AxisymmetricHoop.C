@@ -17,13 +17,15 @@ void AxisymmetricHoop::addHoopForces(EngineView& e) const
     const int stride = w.stride;
     e.strips.forEach([&](std::size_t q) {
         if (e.isRigid(q)) return;  // a rigid body carries no stress
-        const double hoop = p.V[q] * p.sigma[q][ZZ] / p.x[q].x();  // V_p sigma_tt / r_p
         BodyField* body = e.coupling.bodyField(p.body[q]);
         const std::size_t k0 = q * stride;
+        // -V_p sigma_tt <N_i / r>: N_i(x_p) / r_p at a point, the ring's own weight for uGIMP.
+        const bool own = !w.hoop.empty();
+        const double hoop = own ? p.V[q] * p.sigma[q][ZZ] : p.V[q] * p.sigma[q][ZZ] / p.x[q].x();
         for (int a = 0; a < stride; ++a) {
             const int n = w.node[k0 + a];
             if (n < 0) continue;
-            const double f = -hoop * w.N[k0 + a];
+            const double f = -hoop * (own ? w.hoop[k0 + a] : w.N[k0 + a]);
             e.grid.fInt[n].x() += f;
             if (body) body->force[n].x() += f;
         }
@@ -38,13 +40,23 @@ void AxisymmetricHoop::addHoopStrain(EngineView& e, double dt) const
     parallelFor(static_cast<long>(p.size()), [&](long q) {
         if (e.isRigid(static_cast<std::size_t>(q))) return;
         const std::vector<Vector2>& velocity = e.coupling.velocity(e.grid, e.coupling.fieldOf(p.body[q]));
-        double vr = 0;
         const std::size_t k0 = static_cast<std::size_t>(q) * stride;
-        for (int a = 0; a < stride; ++a) {
-            const int n = w.node[k0 + a];
-            if (n >= 0) vr += w.N[k0 + a] * velocity[n].x();
+        double de;
+        if (w.hoop.empty()) {  // v_r(x_p) / r_p
+            double vr = 0;
+            for (int a = 0; a < stride; ++a) {
+                const int n = w.node[k0 + a];
+                if (n >= 0) vr += w.N[k0 + a] * velocity[n].x();
+            }
+            de = dt * vr / p.x[q].x();
+        } else {  // <v_r / r> over the ring
+            double vrOverR = 0;
+            for (int a = 0; a < stride; ++a) {
+                const int n = w.node[k0 + a];
+                if (n >= 0) vrOverR += w.hoop[k0 + a] * velocity[n].x();
+            }
+            de = dt * vrOverR;
         }
-        const double de = dt * vr / p.x[q].x();
         p.dEps[q][ZZ] = de;
         p.eps[q][ZZ] += de;
         p.V[q] *= 1.0 + de;
