@@ -12,7 +12,7 @@ export PATH=$binary_dir/bin:$PATH
 cp -r "$source_dir/tutorials/$tutorial" "$work/case"
 (cd "$work/case" && ./Allclean && ./Allrun) | tee "$work/out"
 grep -q "wall s" "$work/out" || { echo "no error-against-run-time table"; exit 1; }
-rows=$(grep -cE '^[A-Za-z]+ +[0-9e.+-]+ +[0-9]+ +[0-9]+ ' "$work/out" || true)
+rows=$(grep -cE '^[A-Za-z][A-Za-z0-9]* +[0-9e.+-]+ +[0-9]+ +[0-9]+ ' "$work/out" || true)
 [ "$rows" -ge 2 ] || { echo "expected at least 2 ladder rows, found $rows"; exit 1; }
 for png in "$@"; do
     [ -s "$work/case/$png" ] || { echo "missing plot $png"; exit 1; }
