@@ -121,3 +121,14 @@ def window_mean(t, f, keep):
             area += 0.5 * (f[k - 1] + f[k]) * (t[k] - t[k - 1])
             span += t[k] - t[k - 1]
     return area / span if span > 0 else None
+
+
+def settled_window_mean(path, settlement, pressure, lo, hi):
+    """The mean of the pressure samples whose settlement lies in [lo, hi] (a footing's
+    collapse pressure); exits naming `path` when the push stopped short of the window."""
+    import sys
+    end = settlement[-1]
+    window = [p for s, p in zip(settlement, pressure) if lo <= s <= hi]
+    if not window or end < lo:
+        sys.exit(f'{path}: the push reached {end:.1f} mm, short of the window {lo:g}..{hi:g} mm')
+    return sum(window) / len(window)

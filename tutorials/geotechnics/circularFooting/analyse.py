@@ -29,7 +29,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.join(os.environ.get('GPIC_DIR', '../../..'), 'etc', 'python'))
-from gpicdat import read_columns  # noqa: E402
+from gpicdat import read_columns, settled_window_mean  # noqa: E402
 
 C = 26e3            # cohesion [Pa] (constant/materials)
 R = 0.2             # footing radius [m] (constant/bodies)
@@ -56,10 +56,7 @@ def main():
     settlement = [-dy * 1e3 for dy in cols['footing:dy']]                       # mm
     pressure = [f / (math.pi * R * R) / 1e3 for f in cols['footing:Faxial']]   # kPa
     end = settlement[-1]
-    window = [p for s, p in zip(settlement, pressure) if lo <= s <= hi]
-    if not window or end < lo:
-        sys.exit(f'{path}: the push reached {end:.1f} mm, short of the window {lo:g}..{hi:g} mm')
-    q_u = sum(window) / len(window)
+    q_u = settled_window_mean(path, settlement, pressure, lo, hi)
     print(f'{q_u:.1f} {(q_u - reference) / reference * 100:.2f} {q_u * 1e3 / C:.3f} '
           f'{max(pressure):.1f} {end:.1f}')
     if '-series' in sys.argv:

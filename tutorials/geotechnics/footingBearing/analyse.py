@@ -24,7 +24,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.join(os.environ.get('GPIC_DIR', '../../..'), 'etc', 'python'))
-from gpicdat import read_columns  # noqa: E402
+from gpicdat import read_columns, settled_window_mean  # noqa: E402
 
 C, PHI, GAMMA, B = 26e3, 27.0, 20.5e3, 0.4   # table 5.5 and the footing width [Pa, deg, N/m^3, m]
 HALF_WIDTH = 0.5 * B                          # the footing of the half model [m]
@@ -48,10 +48,7 @@ def main():
     settlement = [-dy * 1e3 for dy in cols['footing:dy']]   # mm
     pressure = [fy / HALF_WIDTH / 1e3 for fy in cols['footing:Fy']]   # kPa
     end = settlement[-1]
-    window = [p for s, p in zip(settlement, pressure) if lo <= s <= hi]
-    if not window or end < lo:
-        sys.exit(f'{path}: the push reached {end:.1f} mm, short of the window {lo:g}..{hi:g} mm')
-    p_max = sum(window) / len(window)
+    p_max = settled_window_mean(path, settlement, pressure, lo, hi)
     last = [p for s, p in zip(settlement, pressure) if s >= end - 10]
     reference = bearing_capacity() / 1e3
     print(f'{p_max:.1f} {(p_max - reference) / reference * 100:.2f} {max(pressure):.1f} '
