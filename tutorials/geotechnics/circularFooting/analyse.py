@@ -60,10 +60,9 @@ def main():
     print(f'{q_u:.1f} {(q_u - reference) / reference * 100:.2f} {q_u * 1e3 / C:.3f} '
           f'{max(pressure):.1f} {end:.1f}')
     if '-series' in sys.argv:
+        rows = ['%.4f %.3f %.4f' % (s, p, p * 1e3 / C) for s, p in zip(settlement, pressure)]
         with open(os.path.join(case, 'pressure.dat'), 'w') as f:
-            f.write('# settlement [mm] footing pressure P [kPa] P / c\n')
-            for s, p in zip(settlement, pressure):
-                f.write(f'{s:.4f} {p:.3f} {p * 1e3 / C:.4f}\n')
+            f.write('# settlement [mm] footing pressure P [kPa] P / c\n' + '\n'.join(rows) + '\n')
 
 
 if __name__ == '__main__':
