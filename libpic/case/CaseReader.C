@@ -112,9 +112,6 @@ std::unique_ptr<Case> readCase(const RunOptions& options)
         if (!in.shape->servesAxisymmetric())
             schemes.fail("shapeFunction", "shapeFunction " + c.shapeName + " is not yet available with geometry "
                                           "axisymmetric (constant/grid); valid choices: bilinear, uGIMP");
-        if (in.cellMeanDilatation)
-            schemes.fail("volumetricStrain", "volumetricStrain cellMean is not yet available with geometry "
-                                             "axisymmetric (constant/grid); valid choices: particle");
     }
     in.transfer = Registry<ParticleTransfer>::select(transferName, schemes, schemes, "transfer");
 

@@ -4,39 +4,58 @@
 
 namespace gpic {
 
+namespace {
+
+//- (sigma_rr + sigma_zz + sigma_tt) / 3
+double meanStressOf(const Particles& p, std::size_t q) { return (p.sigma[q][XX] + p.sigma[q][YY] + p.sigma[q][ZZ]) / 3; }
+
+} // namespace
+
 void AxisymmetricHoop::at(StepPoint point, EngineView& e, double dt)
 {
-    if (point == StepPoint::afterForces) addHoopForces(e);
+    if (point == StepPoint::afterParticlesToGrid) means_.assign(e.grid, e.particles, [&](std::size_t q) { return e.isRigid(q); });
+    else if (point == StepPoint::afterForces) addHoopForces(e);
     else addHoopStrain(e, dt);
 }
 
-void AxisymmetricHoop::addHoopForces(EngineView& e) const
+void AxisymmetricHoop::addHoopForces(EngineView& e)
 {
     const Particles& p = e.particles;
     const ShapeWeights& w = e.weights;
     const int stride = w.stride;
+    if (cellMean_) means_.average(p, [&](std::size_t q) { return meanStressOf(p, q); }, mean_);
     e.strips.forEach([&](std::size_t q) {
         if (e.isRigid(q)) return;  // a rigid body carries no stress
         BodyField* body = e.coupling.bodyField(p.body[q]);
         const std::size_t k0 = q * stride;
+        // cellMean: the cell's mean stress in place of the particle's own, sigma + dp I; the
+        // in-plane part of that shift is the correction -V_p dp grad N_ip.
+        const double dp = cellMean_ ? mean_[q] - meanStressOf(p, q) : 0.0;
         // -V_p sigma_tt <N_i / r>: N_i(x_p) / r_p at a point, the ring's own weight for uGIMP.
         const bool own = !w.hoop.empty();
-        const double hoop = own ? p.V[q] * p.sigma[q][ZZ] : p.V[q] * p.sigma[q][ZZ] / p.x[q].x();
+        const double stt = p.sigma[q][ZZ] + dp;
+        const double hoop = own ? p.V[q] * stt : p.V[q] * stt / p.x[q].x();
         for (int a = 0; a < stride; ++a) {
             const int n = w.node[k0 + a];
             if (n < 0) continue;
             const double f = -hoop * (own ? w.hoop[k0 + a] : w.N[k0 + a]);
             e.grid.fInt[n].x() += f;
             if (body) body->force[n].x() += f;
+            if (cellMean_) {
+                const Vector2 shift = -(p.V[q] * dp) * w.dN[k0 + a];
+                e.grid.fInt[n] += shift;
+                if (body) body->force[n] += shift;
+            }
         }
     });
 }
 
-void AxisymmetricHoop::addHoopStrain(EngineView& e, double dt) const
+void AxisymmetricHoop::addHoopStrain(EngineView& e, double dt)
 {
     Particles& p = e.particles;
     const ShapeWeights& w = e.weights;
     const int stride = w.stride;
+    if (cellMean_) value_.assign(p.size(), 0.0);
     parallelFor(static_cast<long>(p.size()), [&](long q) {
         if (e.isRigid(static_cast<std::size_t>(q))) return;
         const std::vector<Vector2>& velocity = e.coupling.velocity(e.grid, e.coupling.fieldOf(p.body[q]));
@@ -61,6 +80,21 @@ void AxisymmetricHoop::addHoopStrain(EngineView& e, double dt) const
         p.eps[q][ZZ] += de;
         p.V[q] *= 1.0 + de;
         p.work[q] += 0.5 * p.V[q] * p.sigma[q][ZZ] * de;  // the first half of the trapezoid, as in-plane
+        if (cellMean_) value_[q] = p.dEps[q][XX] + p.dEps[q][YY] + de;  // the dilatation increment
+    });
+    if (!cellMean_) return;
+    // The cell's mean dilatation increment in place of the particle's own: each normal strain
+    // takes a third of the difference; shear and spin stay the particle's own.
+    means_.average(p, [&](std::size_t q) { return value_[q]; }, mean_);
+    parallelFor(static_cast<long>(p.size()), [&](long q) {
+        if (e.isRigid(static_cast<std::size_t>(q))) return;
+        const double c = (mean_[q] - value_[q]) / 3;
+        for (int k : {XX, YY, ZZ}) {
+            p.dEps[q][k] += c;
+            p.eps[q][k] += c;
+        }
+        p.V[q] *= (1.0 + c) * (1.0 + c) * (1.0 + c);
+        p.work[q] += 0.5 * p.V[q] * 3 * meanStressOf(p, q) * c;
     });
 }
 

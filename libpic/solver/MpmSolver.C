@@ -65,14 +65,17 @@ MpmSolver::MpmSolver(SolverInputs in)
     damping_ = in.damping;
     setMassScaling(in.massScaling);
     if (in.transfer) useTransfer(std::move(in.transfer));
-    if (in.cellMeanDilatation) cellMean_ = std::make_unique<CellMeanDilatation>();
+    // In an axisymmetric scene the hoop pass takes the cell means over the three normal
+    // components (AxisymmetricHoop.H): the in-plane means alone would leave the hoop strain
+    // constrained at every particle.
+    if (in.cellMeanDilatation && !in.grid.axisymmetric()) cellMean_ = std::make_unique<CellMeanDilatation>();
     time_ = in.time;
     removedMass_ = in.removedMass;
     if (rotation_ && in.rotationSides) rotation_->setSideFixed(*in.rotationSides);
     if (rotation_ && !in.rigidRotation.empty()) rotation_->setRigidFixed(std::move(in.rigidRotation));
     if (!in.rigidBodies.empty()) attachRigidBodies(std::move(in.rigidBodies));
     coupleGrid(std::move(in.contact));
-    if (grid_.axisymmetric()) addPass(std::make_unique<AxisymmetricHoop>());
+    if (grid_.axisymmetric()) addPass(std::make_unique<AxisymmetricHoop>(in.cellMeanDilatation));
     if (!in.loads.empty()) {  // after the particles took their final order
         auto loads = std::make_unique<AppliedLoads>(std::move(in.loads), particles_, grid_, in.bodyNames);
         loads_ = loads.get();
