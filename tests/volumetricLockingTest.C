@@ -19,6 +19,24 @@ namespace {
 const double c = 26e3, halfWidth = 0.2;
 const double prandtl = (2.0 + M_PI) * c;  // 133.7 kPa
 
+//- The mean of the footing's force `column` of a run's forces.dat over the rows whose
+//  settlement lies in [lo, hi] [m], divided by `area` (a pressure [Pa]).
+double meanPressure(const fs::path& dir, const std::string& column, double area, double lo, double hi)
+{
+    auto f = readColumns(dir / "postProcessing/forces/0/forces.dat");
+    double sum = 0;
+    int n = 0;
+    for (std::size_t k = 0; k < f[column].size(); ++k) {
+        const double settlement = -f["footing:dy"][k];
+        if (settlement >= lo && settlement <= hi) {
+            sum += f[column][k] / area;
+            ++n;
+        }
+    }
+    EXPECT_GT(n, 10);
+    return n ? sum / n : 0.0;
+}
+
 //- Mean footing pressure [Pa] over 15 ... 25 mm of settlement, where the curve is level.
 double collapsePressure(const std::string& volumetricStrain)
 {
@@ -35,18 +53,7 @@ double collapsePressure(const std::string& volumetricStrain)
     setEntry(dir / "system/controlDict", "writeInterval", "1.25");
     setEntry(dir / "system/mpmSchemes", "volumetricStrain", volumetricStrain);
     runCase(dir);
-    auto f = readColumns(dir / "postProcessing/forces/0/forces.dat");
-    double sum = 0;
-    int n = 0;
-    for (std::size_t k = 0; k < f["footing:Fy"].size(); ++k) {
-        const double settlement = -f["footing:dy"][k];
-        if (settlement >= 0.015 && settlement <= 0.025) {
-            sum += f["footing:Fy"][k] / halfWidth;
-            ++n;
-        }
-    }
-    EXPECT_GT(n, 10);
-    return n ? sum / n : 0.0;
+    return meanPressure(dir, "footing:Fy", halfWidth, 0.015, 0.025);
 }
 
 } // namespace
@@ -78,18 +85,7 @@ double circularCollapsePressure(const std::string& volumetricStrain)
     setEntry(dir / "system/controlDict", "writeInterval", "0.5");
     setEntry(dir / "system/mpmSchemes", "volumetricStrain", volumetricStrain);
     runCase(dir);
-    auto f = readColumns(dir / "postProcessing/forces/0/forces.dat");
-    double sum = 0;
-    int n = 0;
-    for (std::size_t k = 0; k < f["footing:Faxial"].size(); ++k) {
-        const double settlement = -f["footing:dy"][k];
-        if (settlement >= 0.005 && settlement <= 0.010) {
-            sum += f["footing:Faxial"][k] / (M_PI * 0.2 * 0.2);
-            ++n;
-        }
-    }
-    EXPECT_GT(n, 10);
-    return n ? sum / n : 0.0;
+    return meanPressure(dir, "footing:Faxial", M_PI * 0.2 * 0.2, 0.005, 0.010);
 }
 
 } // namespace
