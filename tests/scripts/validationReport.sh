@@ -38,4 +38,15 @@ grep -q "^| oedometerPoint-associated-psi10 | 30000steps " "$report" || { echo "
 if "$work/tutorials/Allvalidate" -args=-full -output "$work/report" > /dev/null 2>&1; then
     echo "-args without -case accepted"; exit 1
 fi
+# A row added by hand to a kept validation.dat (a run made outside Allvalidate) reaches the
+# report with -stored, which runs nothing and takes no tutorial's own rows.
+echo "elasticBar-uGIMP byHand tipDisplacement m 1 1.01 - 1 - 1 1 1" >> "$work/report/verification_elasticBar/validation.dat"
+echo "oedometerPoint-associated-psi10 notKept q Pa 1 2 - 100 - 1 1 1" >> "$work/tutorials/materials/oedometerPoint/validation.dat"
+"$work/tutorials/Allvalidate" -stored -output "$work/report" > /dev/null || { echo "-stored failed"; exit 1; }
+grep -q "^| elasticBar-uGIMP | byHand |" "$report" || { echo "-stored lost the row added by hand"; exit 1; }
+grep -q "| notKept |" "$report" && { echo "-stored took a tutorial's own rows"; exit 1; }
+grep -q 'by `tutorials/Allvalidate -stored`' "$report" || { echo "-stored not named in the report"; exit 1; }
+if "$work/tutorials/Allvalidate" -stored -case oedometerPoint -output "$work/report" > /dev/null 2>&1; then
+    echo "-stored with -case accepted"; exit 1
+fi
 echo "validation report: $(grep -c '^| ' "$report") table rows"
