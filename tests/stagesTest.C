@@ -359,8 +359,9 @@ TEST(Stages, endConditionsByTimeAndByTheToolsDisplacement)
     // The blade did not move while it was held.
     EXPECT_EQ(records[1].startStep, 50);
     // The guard's summary covers the whole run, not only the last stage (a copy of the state
-    // at its start, then one every snapshotInterval = 100 steps).
-    EXPECT_GT(simulation->guard().snapshots(), 1 + (records[1].endStep - records[1].startStep) / 100);
+    // at its start, then one every snapshotInterval steps).
+    const long interval = simulation->guard().snapshotInterval();
+    EXPECT_GT(simulation->guard().snapshots(), 1 + (records[1].endStep - records[1].startStep) / interval);
     const gpic::Particles& p = simulation->solver().particles();
     for (std::size_t q = 0; q < p.size(); ++q)
         if (p.body[q] == 1) {

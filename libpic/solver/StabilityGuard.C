@@ -38,7 +38,7 @@ StabilityGuard::StabilityGuard(const Dictionary& controlDict, const MpmSolver& s
     snapshotInterval_ = d.found("snapshotInterval")
                             ? d.getChecked<long>("snapshotInterval", [](const long& n) { return n >= 1; },
                                                  "snapshotInterval >= 1")
-                            : 100;
+                            : 1000;
     maxEnergyGain_ = d.found("maxEnergyGain")
                          ? d.getChecked<double>("maxEnergyGain", [](const double& g) { return g > 0; },
                                                 "maxEnergyGain > 0")
