@@ -48,7 +48,7 @@ PrincipalStresses::PrincipalStresses(const SymTensor& s)
 SymTensor PrincipalStresses::tensor(const Eigen::Vector3d& sorted) const
 {
     // Read through the inverse permutation: scattering into a local array first costs a
-    // store-forwarding stall per call (a tenth of the Mohr-Coulomb pass).
+    // store-forwarding stall per call (a tenth of the column collapse's run time).
     const double a = sorted[position_[majorInPlane]], b = sorted[position_[minorInPlane]];
     // Rotation back by -theta, eq. H.5.34.
     return SymTensor(a * c_ * c_ + b * s_ * s_, a * s_ * s_ + b * c_ * c_, sorted[position_[outOfPlane]],
