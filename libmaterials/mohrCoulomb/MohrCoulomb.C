@@ -6,9 +6,11 @@
 #include "plasticity/YieldState.H"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <iomanip>
 #include <limits>
+#include <new>
 #include <sstream>
 
 namespace gpic {
@@ -152,33 +154,54 @@ void MohrCoulomb::updateStress(Particles& p, const ParticleBlock& block, double)
     const PreparedPlanes fixed = return_.prepare(planes(0, 0));
     PreparedPlanes varying;
     unsigned activeSet = 0;  // the previous particle's return region, tried first
-    for (std::size_t i = block.begin; i < block.end; ++i) {
-        SymTensor& s = p.sigma[i];
-        if (grains_.lost(p.m[i], p.V[i])) {
-            s = SymTensor::Zero();
-            state[i] = code(YieldState::disconnected);
-            continue;
+    // A batch in three loops: trial stresses and principal values, returns, write-back. The
+    // points of each loop are independent, so their long chains (sine and cosine, two square
+    // roots and a division in the principal values, the square root of the hardening) overlap
+    // instead of waiting one after the other: the pass is latency-bound, not arithmetic-bound.
+    constexpr std::size_t batch = 32;
+    std::array<PrincipalStresses, batch> principal;
+    std::array<bool, batch> lost;
+    std::array<PrincipalReturnResult, batch> returned;
+    for (std::size_t b = block.begin; b < block.end; b += batch) {
+        const std::size_t e = std::min(block.end, b + batch);
+        for (std::size_t i = b; i < e; ++i) {
+            SymTensor& s = p.sigma[i];
+            lost[i - b] = grains_.lost(p.m[i], p.V[i]);
+            if (lost[i - b]) continue;
+            rotateJaumann(s, p.dOmega[i]);
+            elastic_.addElasticIncrement(s, p.dEps[i]);  // sigma_I, eq. H.2.1
+            // Built in place: a copy would read back the values as they are being stored.
+            new (&principal[i - b]) PrincipalStresses(s);  // eq. H.5.26 - H.5.33
         }
-        rotateJaumann(s, p.dOmega[i]);
-        elastic_.addElasticIncrement(s, p.dEps[i]);  // sigma_I, eq. H.2.1
-
-        const PrincipalStresses principal(s);  // eq. H.5.26 - H.5.33
-        // Properties at the start of the step: hardening lags one step (seed H.5.3).
-        if (!constant_) varying = return_.prepare(planes(epsPs[i], epsPt[i]));
-        const PrincipalReturnResult r = return_(principal.values(), constant_ ? fixed : varying, &activeSet);
-        if (!r.plastic()) {
-            state[i] = code(YieldState::elastic);
-            continue;
+        for (std::size_t i = b; i < e; ++i) {
+            if (lost[i - b]) continue;
+            // Properties at the start of the step: hardening lags one step (seed H.5.3).
+            if (!constant_) varying = return_.prepare(planes(epsPs[i], epsPt[i]));
+            returned[i - b] = return_(principal[i - b].values(), constant_ ? fixed : varying, &activeSet);
         }
-        s = principal.tensor(r.sigma);  // back to x1, x2 with the axes kept, eq. H.5.34
-        p.epsP[i] += principal.tensor(r.dEpsPShear + r.dEpsPTension);
-        epsPs[i] += shearHardeningIncrement(r.dEpsPShear);
-        epsPt[i] += r.dEpsPTension.sum();
-        const int used = r.nShear + r.nTension;
-        state[i] = code(used >= 3   ? YieldState::apex
-                        : used == 2 ? YieldState::edge
-                        : r.nTension ? YieldState::tension
-                                     : YieldState::shear);
+        for (std::size_t i = b; i < e; ++i) {
+            SymTensor& s = p.sigma[i];
+            if (lost[i - b]) {
+                s = SymTensor::Zero();
+                state[i] = code(YieldState::disconnected);
+                continue;
+            }
+            const PrincipalReturnResult& r = returned[i - b];
+            if (!r.plastic()) {
+                state[i] = code(YieldState::elastic);
+                continue;
+            }
+            const PrincipalStresses& trial = principal[i - b];
+            s = trial.tensor(r.sigma);  // back to x1, x2 with the axes kept, eq. H.5.34
+            p.epsP[i] += trial.tensor(r.dEpsPShear + r.dEpsPTension);
+            epsPs[i] += shearHardeningIncrement(r.dEpsPShear);
+            epsPt[i] += r.dEpsPTension.sum();
+            const int used = r.nShear + r.nTension;
+            state[i] = code(used >= 3   ? YieldState::apex
+                            : used == 2 ? YieldState::edge
+                            : r.nTension ? YieldState::tension
+                                         : YieldState::shear);
+        }
     }
 }
 

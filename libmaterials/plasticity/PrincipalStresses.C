@@ -45,14 +45,4 @@ PrincipalStresses::PrincipalStresses(const SymTensor& s)
     for (int i = 0; i < 3; ++i) position_[axis_[i]] = i;
 }
 
-SymTensor PrincipalStresses::tensor(const Eigen::Vector3d& sorted) const
-{
-    // Read through the inverse permutation: scattering into a local array first costs a
-    // store-forwarding stall per call (a tenth of the column collapse's run time).
-    const double a = sorted[position_[majorInPlane]], b = sorted[position_[minorInPlane]];
-    // Rotation back by -theta, eq. H.5.34.
-    return SymTensor(a * c_ * c_ + b * s_ * s_, a * s_ * s_ + b * c_ * c_, sorted[position_[outOfPlane]],
-                     (a - b) * s_ * c_);
-}
-
 } // namespace gpic

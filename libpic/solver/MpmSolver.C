@@ -15,9 +15,13 @@ namespace gpic {
 
 namespace {
 //- sigma : eps for plane-strain tensors (the shear pair counted twice).
+inline double contract(const SymTensor& s, double eXX, double eYY, double eZZ, double eXY)
+{
+    return s[XX] * eXX + s[YY] * eYY + s[ZZ] * eZZ + 2.0 * s[XY] * eXY;
+}
 inline double contract(const SymTensor& s, const SymTensor& e)
 {
-    return s[XX] * e[XX] + s[YY] * e[YY] + s[ZZ] * e[ZZ] + 2.0 * s[XY] * e[XY];
+    return contract(s, e[XX], e[YY], e[ZZ], e[XY]);
 }
 } // namespace
 
@@ -372,17 +376,25 @@ void MpmSolver::updateStress(double dt)
             return L;
         };
         const auto strainIncrement = [&](std::size_t q, const Eigen::Matrix2d& L) {
+            // Kept as scalars: reading freshly stored components back as a pair stalls on
+            // store forwarding (a third of this pass).
+            const double dXX = dt * L(0, 0), dYY = dt * L(1, 1), dZZ = 0.0 /* plane strain */,
+                         dXY = 0.5 * dt * (L(0, 1) + L(1, 0));
             SymTensor& de = p.dEps[q];
-            de[XX] = dt * L(0, 0);
-            de[YY] = dt * L(1, 1);
-            de[ZZ] = 0.0;  // plane strain
-            de[XY] = 0.5 * dt * (L(0, 1) + L(1, 0));
+            de[XX] = dXX;
+            de[YY] = dYY;
+            de[ZZ] = dZZ;
+            de[XY] = dXY;
             p.dOmega[q] = 0.5 * dt * (L(0, 1) - L(1, 0));
-            p.eps[q] += de;
+            SymTensor& eps = p.eps[q];
+            eps[XX] += dXX;
+            eps[YY] += dYY;
+            eps[ZZ] += dZZ;
+            eps[XY] += dXY;
             // Volume follows the deformation: V_{t+1} = det(I + dt L) V_t.
             p.V[q] *= (1.0 + dt * L(0, 0)) * (1.0 + dt * L(1, 1)) - dt * dt * L(0, 1) * L(1, 0);
             // Stress work by the trapezoidal rule (first half): an energy measure valid for every material.
-            p.work[q] += 0.5 * p.V[q] * contract(p.sigma[q], de);
+            p.work[q] += 0.5 * p.V[q] * contract(p.sigma[q], dXX, dYY, dZZ, dXY);
         };
         if (!cellMean_) {
             parallelFor(nParticles, [&](long q) { strainIncrement(q, velocityGradient(q)); });
