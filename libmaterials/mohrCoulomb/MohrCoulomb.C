@@ -177,7 +177,8 @@ void MohrCoulomb::updateStress(Particles& p, const ParticleBlock& block, double)
             if (lost[i - b]) continue;
             // Properties at the start of the step: hardening lags one step (seed H.5.3).
             if (!constant_) varying = return_.prepare(planes(epsPs[i], epsPt[i]));
-            returned[i - b] = return_(principal[i - b].values(), constant_ ? fixed : varying, &activeSet);
+            new (&returned[i - b]) PrincipalReturnResult(  // in place, as above
+                return_(principal[i - b].values(), constant_ ? fixed : varying, &activeSet));
         }
         for (std::size_t i = b; i < e; ++i) {
             SymTensor& s = p.sigma[i];
