@@ -87,6 +87,7 @@ PreparedPlanes PrincipalReturn::prepare(const YieldPlanes& planes) const
         p.Db[j] = D_ * planes.plane[j].b;
         p.DbNorm[j] = p.Db[j].norm();
         p.aNorm[j] = planes.plane[j].a.norm();
+        p.kDistance[j] = std::abs(planes.plane[j].k) / p.aNorm[j];
     }
     for (int i = 0; i < planes.n; ++i)
         for (int j = 0; j < planes.n; ++j) p.M[i][j] = planes.plane[i].a.dot(p.Db[j]);
@@ -115,7 +116,7 @@ PrincipalReturnResult PrincipalReturn::operator()(const Eigen::Vector3d& sigmaI,
     }
     if (!yielding) return result;
     double scale = sigmaI.cwiseAbs().maxCoeff();
-    for (int i = 0; i < n; ++i) scale = std::max(scale, std::abs(planes.plane[i].k) / aNorm[i]);
+    for (int i = 0; i < n; ++i) scale = std::max(scale, prepared.kDistance[i]);
     if (scale == 0) scale = 1;
     const double tol = tolerance * scale;
 
