@@ -30,18 +30,24 @@ PrincipalStresses::PrincipalStresses(const SymTensor& s)
         major = centre + radius;
         minor = centre - radius;
     }
-    // Sort three values (a stable exchange sort: equal values keep the axis order).
-    sigma_ << major, minor, s[ZZ];
-    axis_ = {majorInPlane, minorInPlane, outOfPlane};
-    const auto order = [this](int i, int j) {
-        if (sigma_[j] < sigma_[i]) {
-            std::swap(sigma_[i], sigma_[j]);
-            std::swap(axis_[i], axis_[j]);
-        }
+    // Sort three values (a stable exchange sort: equal values keep the axis order), in
+    // registers and by selection, not by branches the data would mispredict.
+    double v[3] = {major, minor, s[ZZ]};
+    Axis a[3] = {majorInPlane, minorInPlane, outOfPlane};
+    const auto order = [&v, &a](int i, int j) {
+        const bool exchange = v[j] < v[i];
+        const double vi = exchange ? v[j] : v[i], vj = exchange ? v[i] : v[j];
+        const Axis ai = exchange ? a[j] : a[i], aj = exchange ? a[i] : a[j];
+        v[i] = vi;
+        v[j] = vj;
+        a[i] = ai;
+        a[j] = aj;
     };
     order(0, 1);
     order(1, 2);
     order(0, 1);
+    sigma_ << v[0], v[1], v[2];
+    axis_ = {a[0], a[1], a[2]};
     for (int i = 0; i < 3; ++i) position_[axis_[i]] = i;
 }
 
