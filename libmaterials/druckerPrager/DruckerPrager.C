@@ -143,16 +143,19 @@ void DruckerPrager::updateStress(Particles& p, const ParticleBlock& block, doubl
             how = tauP > 0 ? YieldState::edge : YieldState::apex;
         }
 
-        // The deviator keeps its direction (eq. H.3.22, H.3.30).
-        const SymTensor dev = deviator(s);
-        const SymTensor flow = qI > 0 ? SymTensor(dev / (2.0 * qI)) : SymTensor(SymTensor::Zero());
-        s = qI > 0 ? SymTensor(dev * (qN / qI)) : SymTensor(SymTensor::Zero());
-        s[XX] += pN; s[YY] += pN; s[ZZ] += pN;
-        // dEpsP = lambda_s dg_s/dsigma + lambda_t dg_t/dsigma, eq. H.3.16, H.3.24
+        // The deviator keeps its direction (eq. H.3.22, H.3.30); dEpsP = lambda_s dg_s/dsigma
+        // + lambda_t dg_t/dsigma (eq. H.3.16, H.3.24). Component by component in registers:
+        // tensors built on the stack and read back as pairs stall on store forwarding.
         const double volumetric = (lambdaS * qPsi_ + lambdaT) / 3.0;
-        SymTensor dEpsP = lambdaS * flow;
-        dEpsP[XX] += volumetric; dEpsP[YY] += volumetric; dEpsP[ZZ] += volumetric;
-        p.epsP[i] += dEpsP;
+        const double twoQ = 2.0 * qI, scale = qI > 0 ? qN / qI : 0.0;
+        SymTensor& epsP = p.epsP[i];
+        for (int c : {XX, YY, ZZ}) {
+            const double dev = s[c] - pI;  // deviator(s)
+            s[c] = (qI > 0 ? dev * scale : 0.0) + pN;
+            epsP[c] += lambdaS * (qI > 0 ? dev / twoQ : 0.0) + volumetric;
+        }
+        epsP[XY] += lambdaS * (qI > 0 ? s[XY] / twoQ : 0.0);
+        s[XY] = qI > 0 ? s[XY] * scale : 0.0;
         epsPs[i] += lambdaS;  // eps_q of the plastic increment, eq. H.3.4
         state[i] = code(how);
     }
