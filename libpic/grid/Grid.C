@@ -92,7 +92,7 @@ void Grid::allocate()
     fInt.assign(n, Vector2::Zero());
     fExt.assign(n, Vector2::Zero());
     accel.assign(n, Vector2::Zero());
-    isActive_.assign(n, 0);
+    isActive_.assign(n, NodeMark::idle);
     active.reserve(n);
 }
 
@@ -109,7 +109,7 @@ void Grid::resetFields()
         fExt[n].setZero();
         accel[n].setZero();
         if (!fContact.empty()) fContact[n].setZero();
-        isActive_[n] = 0;
+        isActive_[n] = NodeMark::idle;
     }
     active.clear();
 }
@@ -119,7 +119,7 @@ void Grid::collectActive()
     active.clear();
     const int n = nNodes();
     for (int i = 0; i < n; ++i)
-        if (isActive_[static_cast<std::size_t>(i)]) active.push_back(i);
+        if (isActive_[static_cast<std::size_t>(i)] == NodeMark::active) active.push_back(i);
 }
 
 std::vector<int> Grid::sideNodes(GridSide side) const
