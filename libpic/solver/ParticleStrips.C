@@ -27,6 +27,29 @@ long ParticleStrips::cellKey(const Grid& grid, const Vector2& x) const
     return axis_ == 0 ? long(i) * grid.ny() + j : long(j) * grid.nx() + i;
 }
 
+ParticleStrips::StripRun ParticleStrips::runOf(int colour, int t, int threads) const
+{
+    long total = 0;
+    for (int s = colour; s < nStrips_; s += 2) total += start_[s + 1] - start_[s];
+    // A strip goes to the thread whose share holds its middle particle: owners rise with s.
+    StripRun run{0, 0};
+    bool found = false;
+    long before = 0;
+    for (int s = colour; s < nStrips_; s += 2) {
+        const long count = start_[s + 1] - start_[s];
+        const long owner = total > 0 ? std::min<long>(threads - 1, (2 * before + count) * threads / (2 * total)) : 0;
+        before += count;
+        if (owner == t) {
+            if (!found) run.first = s;
+            found = true;
+            run.end = s + 1;
+        } else if (owner > t) {
+            break;
+        }
+    }
+    return run;
+}
+
 void ParticleStrips::assign(const Grid& grid, const Particles& p)
 {
     const auto n = static_cast<long>(p.size());
