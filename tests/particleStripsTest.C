@@ -1,7 +1,7 @@
-// The scatter's strips (ParticleStrips::forEach): at any thread count every particle is
-// visited once; within a colour each thread works on one run of neighbouring strips, the
-// runs in thread order along the grid; and the runs share the colour's particles evenly to
-// within one strip's particles.
+// The scatter's strips (ParticleStrips): at any thread count every particle is visited once,
+// a strip's particles in index order (the counting sort is stable); within a colour each
+// thread works on one run of neighbouring strips, the runs in thread order along the grid;
+// and the runs share the colour's particles evenly to within one strip's particles.
 #include "core/Threads.H"
 #include "solver/ParticleStrips.H"
 
@@ -38,6 +38,7 @@ struct Visit {
     int thread = -1;
     int team = 0;
     int count = 0;
+    long sequence = -1;  //- place among the visits of its thread
 };
 
 } // namespace
@@ -47,7 +48,6 @@ TEST(ParticleStrips, eachThreadScattersOneBalancedRunOfStripsPerColour)
     const Grid grid(Vector2::Zero(), Vector2(0.1, 0.1), 40, 10);
     const Particles p = unevenParticles(grid);
     ParticleStrips strips(grid);
-    strips.assign(grid, p);
     ASSERT_EQ(strips.count(), 10);
 
     const long savedWork = minParallelWork();
@@ -55,9 +55,12 @@ TEST(ParticleStrips, eachThreadScattersOneBalancedRunOfStripsPerColour)
     minParallelWork() = 1;
     for (int threads : {1, 2, 3, 5}) {
         omp_set_num_threads(threads);
+        strips.assign(grid, p);  // sorted at this thread count too
         std::vector<Visit> visits(p.size());
+        std::vector<long> visitsOf(static_cast<std::size_t>(threads), 0);
         strips.forEach([&](std::size_t q) {
             visits[q].thread = threadIndex();
+            visits[q].sequence = visitsOf[static_cast<std::size_t>(threadIndex())]++;
             visits[q].team = teamSize();
             ++visits[q].count;
         });
@@ -69,13 +72,18 @@ TEST(ParticleStrips, eachThreadScattersOneBalancedRunOfStripsPerColour)
             long total = 0, largest = 0;
             for (int s = colour; s < strips.count(); s += 2) {
                 int thread = -1;
-                long n = 0;
+                long n = 0, lastSequence = -1;
                 for (std::size_t q = 0; q < p.size(); ++q) {
                     if (strips.stripOf(grid, p.x[q]) != s) continue;
                     ASSERT_EQ(visits[q].count, 1) << "particle " << q << " at " << threads << " threads";
                     ASSERT_EQ(visits[q].team, threads);
-                    if (thread >= 0) ASSERT_EQ(visits[q].thread, thread) << "strip " << s << " split";
+                    if (thread >= 0) {
+                        ASSERT_EQ(visits[q].thread, thread) << "strip " << s << " split";
+                    }
                     thread = visits[q].thread;
+                    // Particle order inside a strip, as the node sums need it.
+                    ASSERT_GT(visits[q].sequence, lastSequence) << "particle " << q << " out of order";
+                    lastSequence = visits[q].sequence;
                     ++n;
                 }
                 if (n == 0) continue;

@@ -55,14 +55,37 @@ void ParticleStrips::assign(const Grid& grid, const Particles& p)
     const auto n = static_cast<long>(p.size());
     strip_.resize(p.size());
     order_.resize(p.size());
-#pragma omp parallel for schedule(static) if (n >= minParallelWork())
-    for (long q = 0; q < n; ++q) strip_[q] = stripOf(grid, p.x[q]);
-    // Counting sort: stable, so particles keep their index order inside a strip.
-    std::fill(start_.begin(), start_.end(), 0);
-    for (int s : strip_) ++start_[s + 1];
-    for (int s = 0; s < nStrips_; ++s) start_[s + 1] += start_[s];
-    fill_.assign(start_.begin(), start_.end() - 1);
-    for (long q = 0; q < n; ++q) order_[fill_[strip_[q]]++] = static_cast<int>(q);
+    // Counting sort, stable (particles keep their index order inside a strip) at any thread
+    // count: each thread counts its own range of particles, then places them after those of
+    // the same strip in the ranges before its own. Every step, so not left to one thread.
+    fill_.resize(static_cast<std::size_t>(threadCount()));
+#pragma omp parallel if (n >= minParallelWork())
+    {
+        const int t = threadIndex(), threads = teamSize();
+        const long begin = n * t / threads, end = n * (t + 1) / threads;
+        std::vector<int>& next = fill_[static_cast<std::size_t>(t)];
+        next.assign(static_cast<std::size_t>(nStrips_), 0);
+        for (long q = begin; q < end; ++q) {
+            strip_[q] = stripOf(grid, p.x[q]);
+            ++next[strip_[q]];
+        }
+#pragma omp barrier
+#pragma omp single
+        {
+            start_[0] = 0;
+            for (int s = 0; s < nStrips_; ++s) {
+                int at = start_[s];
+                for (int u = 0; u < threads; ++u) {
+                    int& slot = fill_[static_cast<std::size_t>(u)][s];
+                    const int count = slot;
+                    slot = at;
+                    at += count;
+                }
+                start_[s + 1] = at;
+            }
+        }
+        for (long q = begin; q < end; ++q) order_[next[strip_[q]]++] = static_cast<int>(q);
+    }
 }
 
 } // namespace gpic
