@@ -67,7 +67,6 @@ TEST(ParticleStrips, eachThreadScattersOneBalancedRunOfStripsPerColour)
         for (int colour = 0; colour < 2; ++colour) {
             // Per strip of the colour, in order along the grid: its thread and particles.
             std::vector<int> owner;
-            std::vector<long> size;
             std::map<int, long> share;
             long total = 0, largest = 0;
             for (int s = colour; s < strips.count(); s += 2) {
