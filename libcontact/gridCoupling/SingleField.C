@@ -17,19 +17,28 @@ void SingleField::particlesToGrid(EngineView& e, double t)
     const Particles& p = e.particles;
     const ShapeWeights& w = e.weights;
     const int stride = w.stride;
-    e.strips.forEach([&](std::size_t q) {
+    // Pointers and flags captured by value (ParticleStrips::forEach): Eigen's SSE stores may
+    // alias anything, and what the loop reads through memory is reloaded after each of them.
+    const int* node = w.node.data();
+    const double* Nw = w.N.data();
+    double* mass = grid.mass.data();
+    Vector2* momentum = grid.momentum.data();
+    const Grid::ActiveMarker markActive = grid.activeMarker();
+    const bool affine = p.carries(FieldGroup::affine);
+    e.strips.forEach([&, node, Nw, mass, momentum, markActive, affine, stride](std::size_t q) {
         const std::size_t k0 = q * stride;
         const bool rigidParticle = driven_ && e.rigid[p.body[q]];
         const double m = e.inertialMass(q);  // m_p, or scaled (MassScaling.H)
+        const Vector2 vp = p.v[q];
         for (int a = 0; a < stride; ++a) {
-            const int n = w.node[k0 + a];
-            const double N = w.N[k0 + a];
+            const int n = node[k0 + a];
+            const double N = Nw[k0 + a];
             if (n < 0) continue;
-            grid.markActive(n);  // also at N = 0: its gradient may still carry force
-            const Vector2 v = e.carriedVelocity(q, n, p.x[q]);  // APIC: v_p + C_p (x_i - x_p)
+            markActive(n);  // also at N = 0: its gradient may still carry force
+            const Vector2 v = affine ? e.carriedVelocity(q, n, p.x[q]) : vp;  // APIC: v_p + C_p (x_i - x_p)
             if (rigidParticle) driven_->add(n, p.body[q], N, N * m, v);
-            grid.mass[n] += N * m;             // lumped mass, row sums of eq. 2.3.7
-            grid.momentum[n] += (N * m) * v;  // eq. 2.4.1
+            mass[n] += N * m;             // lumped mass, row sums of eq. 2.3.7
+            momentum[n] += (N * m) * v;  // eq. 2.4.1
         }
     });
     grid.collectActive();
@@ -71,14 +80,19 @@ void SingleField::remapVelocity(EngineView& e, double tNew, double dt)
     const ShapeWeights& w = e.weights;
     const int stride = w.stride;
     grid.forEachActiveNode([&](int n) { grid.momentum[n].setZero(); });
-    e.strips.forEach([&](std::size_t q) {
+    const int* node = w.node.data();
+    const double* Nw = w.N.data();
+    Vector2* momentum = grid.momentum.data();
+    const bool affine = e.particles.carries(FieldGroup::affine);
+    e.strips.forEach([&, node, Nw, momentum, affine, stride](std::size_t q) {  // as particlesToGrid
         const std::size_t k0 = q * stride;
         const Vector2 xp = e.remapCentre(q, dt);
         const double m = e.inertialMass(q);
+        const Vector2 vp = e.particles.v[q];
         for (int a = 0; a < stride; ++a) {
-            const int n = w.node[k0 + a];
+            const int n = node[k0 + a];
             if (n < 0) continue;
-            grid.momentum[n] += (w.N[k0 + a] * m) * e.carriedVelocity(q, n, xp);
+            momentum[n] += (Nw[k0 + a] * m) * (affine ? e.carriedVelocity(q, n, xp) : vp);
         }
     });
     grid.velocitiesFromMomenta();

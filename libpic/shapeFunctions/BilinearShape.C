@@ -11,11 +11,17 @@ void BilinearShape::evaluate(const Grid& grid, const Particles& p, ShapeWeights&
     w.resize(p.size(), 4);
     const Vector2 h = grid.cellSize();
     const auto n = static_cast<long>(p.size());
+    // The arrays' pointers in locals: Eigen's SSE stores may alias anything, and the compiler
+    // would otherwise reload them after each weight written.
+    int* node = w.node.data();
+    double* N = w.N.data();
+    Vector2* dN = w.dN.data();
+    const Vector2* x = p.x.data();
 #pragma omp parallel for schedule(static) if (n >= minParallelWork())
     for (long q = 0; q < n; ++q) {
         int i, j;
-        grid.cellOf(p.x[q], i, j);
-        const Vector2 local = p.x[q] - grid.nodePosition(i, j);
+        grid.cellOf(x[q], i, j);
+        const Vector2 local = x[q] - grid.nodePosition(i, j);
         const double xi = local.x() / h.x(), eta = local.y() / h.y();
         const std::size_t k = q * 4;
         // Counter-clockwise from the lower-left node.
@@ -25,9 +31,9 @@ void BilinearShape::evaluate(const Grid& grid, const Particles& p, ShapeWeights&
         const double dNx[4] = {-1 / h.x(), 1 / h.x(), 1 / h.x(), -1 / h.x()};
         const double dNy[4] = {-1 / h.y(), -1 / h.y(), 1 / h.y(), 1 / h.y()};
         for (int a = 0; a < 4; ++a) {
-            w.node[k + a] = nodes[a];
-            w.N[k + a] = Nx[a] * Ny[a];
-            w.dN[k + a] = Vector2(dNx[a] * Ny[a], Nx[a] * dNy[a]);
+            node[k + a] = nodes[a];
+            N[k + a] = Nx[a] * Ny[a];
+            dN[k + a] = Vector2(dNx[a] * Ny[a], Nx[a] * dNy[a]);
         }
     }
 }

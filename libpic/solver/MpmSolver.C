@@ -319,7 +319,15 @@ void MpmSolver::computeForces()
     const int stride = weights_.stride;
     if (cellMean_)
         cellMean_->average(p, [&](std::size_t q) { return 0.5 * (p.sigma[q][XX] + p.sigma[q][YY]); }, cellMeanValue_);
-    strips_.forEach([&](std::size_t q) {
+    // The arrays' pointers in locals: Eigen's SSE stores may alias anything, and the compiler
+    // would otherwise reload every vector's data pointer after each addition into a node.
+    const int* node = weights_.node.data();
+    const double* N = weights_.N.data();
+    const Vector2* dNs = weights_.dN.data();
+    Vector2* fIntAt = grid_.fInt.data();
+    Vector2* fExtAt = grid_.fExt.data();
+    const Vector2 g = gravity_;
+    strips_.forEach([&, node, N, dNs, fIntAt, fExtAt, g, stride](std::size_t q) {
         // A rigid body carries no stress: its nodes are driven instead.
         SymTensor s = driverOf(q) ? SymTensor::Zero() : p.sigma[q];
         if (cellMean_) {  // the cell's mean in-plane pressure in place of the particle's own
@@ -329,15 +337,16 @@ void MpmSolver::computeForces()
         }
         const std::size_t k0 = q * stride;
         BodyField* body = coupling_->bodyField(p.body[q]);
+        const double Vp = p.V[q], mp = p.m[q];
         for (int a = 0; a < stride; ++a) {
-            const int n = weights_.node[k0 + a];
+            const int n = node[k0 + a];
             if (n < 0) continue;
-            const Vector2& dN = weights_.dN[k0 + a];
+            const Vector2 dN = dNs[k0 + a];
             // eq. 2.3.8: F_int = -sum_p V_p B_p^T sigma_p
-            const Vector2 fInt = -p.V[q] * Vector2(s[XX] * dN.x() + s[XY] * dN.y(), s[XY] * dN.x() + s[YY] * dN.y());
-            const Vector2 fExt = (weights_.N[k0 + a] * p.m[q]) * gravity_;  // eq. 2.3.9; loads: AppliedLoads
-            grid_.fInt[n] += fInt;
-            grid_.fExt[n] += fExt;
+            const Vector2 fInt = -Vp * Vector2(s[XX] * dN.x() + s[XY] * dN.y(), s[XY] * dN.x() + s[YY] * dN.y());
+            const Vector2 fExt = (N[k0 + a] * mp) * g;  // eq. 2.3.9; loads: AppliedLoads
+            fIntAt[n] += fInt;
+            fExtAt[n] += fExt;
             // With a contact pass the same terms go to the body's own field too.
             if (body) body->force[n] += fInt + fExt;
         }
