@@ -50,7 +50,7 @@ int MultiFieldContact::correct(Grid& grid, const Particles& p,
         if (shared(n)) contactNodes_.push_back(n);
     if (contactNodes_.empty()) return 0;
     // Only on steps with contact: the normals where the bodies are now.
-    normals_->place(grid, p);
+    normals_->place(grid, p, contactNodes_);
     correctNodes(grid, rigid, tNew, dt, &loads);
     return static_cast<int>(contactNodes_.size());
 }

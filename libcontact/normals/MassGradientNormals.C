@@ -1,30 +1,65 @@
 #include "normals/MassGradientNormals.H"
 
+#include <algorithm>
 #include <cmath>
 
 namespace gpic {
 
 MassGradientNormals::MassGradientNormals(const Dictionary&, const ContactScene& scene) : nBodies_(scene.nBodies()) {}
 
-void MassGradientNormals::place(const Grid& grid, const Particles& p)
+namespace {
+//- floor(v) as an int for v well inside the int range (a particle inside the grid), without
+//  the library call the baseline x86-64 build makes for std::floor.
+int floorOf(double v)
+{
+    const int k = static_cast<int>(v);
+    return k - (v < k);
+}
+} // namespace
+
+void MassGradientNormals::place(const Grid& grid, const Particles& p, const std::vector<int>& nodes)
 {
     nx_ = grid.nx();
     ny_ = grid.ny();
     h_ = grid.cellSize();
     const auto cells = static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_);
     density_.assign(static_cast<std::size_t>(nBodies_) * cells, 0.0);
+    // Only the cells around the contact nodes are summed (outward() reads no others): most
+    // particles are far from contact, and this pass runs on one thread, in particle order,
+    // so that each sum is the same at any thread count.
+    needed_.assign(cells, 0);
+    int iLow = nx_, iHigh = -1, jLow = ny_, jHigh = -1;
+    for (int n : nodes) {
+        const int i = n % (nx_ + 1), j = n / (nx_ + 1);
+        for (int cj = std::max(j - 1, 0); cj <= std::min(j, ny_ - 1); ++cj)
+            for (int ci = std::max(i - 1, 0); ci <= std::min(i, nx_ - 1); ++ci) {
+                needed_[ci + cj * nx_] = 1;
+                iLow = std::min(iLow, ci), iHigh = std::max(iHigh, ci);
+                jLow = std::min(jLow, cj), jHigh = std::max(jHigh, cj);
+            }
+    }
+    const Vector2 origin = grid.origin(), h = h_;
+    // A particle reaches the centres of the cells within half a cell of its own: one outside
+    // these bounds (a cell's margin) reaches no needed cell.
+    const Vector2 low = origin + Vector2((iLow - 1) * h.x(), (jLow - 1) * h.y());
+    const Vector2 high = origin + Vector2((iHigh + 2) * h.x(), (jHigh + 2) * h.y());
+    const Vector2* x = p.x.data();
+    const double* m = p.m.data();
+    const int* body = p.body.data();
+    const std::uint8_t* needed = needed_.data();
     for (std::size_t q = 0; q < p.size(); ++q) {
+        if (x[q].x() < low.x() || x[q].x() >= high.x() || x[q].y() < low.y() || x[q].y() >= high.y()) continue;
         // Element centres within one cell of the particle, with bilinear weights S1.
-        const Vector2 s = Vector2((p.x[q] - grid.origin()).array() / h_.array()) - Vector2(0.5, 0.5);
-        const int i0 = static_cast<int>(std::floor(s.x())), j0 = static_cast<int>(std::floor(s.y()));
+        const Vector2 s = Vector2((x[q] - origin).array() / h.array()) - Vector2(0.5, 0.5);
+        const int i0 = floorOf(s.x()), j0 = floorOf(s.y());
         const double fx = s.x() - i0, fy = s.y() - j0;
-        double* rho = density_.data() + static_cast<std::size_t>(p.body[q]) * cells;
+        double* rho = density_.data() + static_cast<std::size_t>(body[q]) * cells;
         for (int b = 0; b < 2; ++b)
             for (int a = 0; a < 2; ++a) {
                 const int i = i0 + a, j = j0 + b;
-                if (i < 0 || j < 0 || i >= nx_ || j >= ny_) continue;
+                if (i < 0 || j < 0 || i >= nx_ || j >= ny_ || !needed[i + j * nx_]) continue;
                 const double S1 = (a ? fx : 1.0 - fx) * (b ? fy : 1.0 - fy);
-                rho[i + j * nx_] += p.m[q] * S1;
+                rho[i + j * nx_] += m[q] * S1;
             }
     }
 }

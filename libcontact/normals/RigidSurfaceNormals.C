@@ -17,9 +17,9 @@ RigidSurfaceNormals::RigidSurfaceNormals(const Dictionary& dict, const ContactSc
     }
 }
 
-void RigidSurfaceNormals::place(const Grid& grid, const Particles& p)
+void RigidSurfaceNormals::place(const Grid& grid, const Particles& p, const std::vector<int>& nodes)
 {
-    MassGradientNormals::place(grid, p);
+    MassGradientNormals::place(grid, p, nodes);
     for (std::size_t b = 0; b < surfaces_.size(); ++b)
         if (surfaces_[b]) surfaces_[b]->place(p, static_cast<int>(b));
 }
