@@ -18,18 +18,24 @@ void MultiField::particlesToGrid(EngineView& e, double t)
     const Particles& p = e.particles;
     const ShapeWeights& w = e.weights;
     const int stride = w.stride;
-    e.strips.forEach([&](std::size_t q) {
+    // Pointers captured by value or held in the kernel's locals, as in SingleField.
+    const int* node = w.node.data();
+    const double* Nw = w.N.data();
+    const Grid::ActiveMarker markActive = grid.activeMarker();
+    e.strips.forEach([&, node, Nw, markActive, stride](std::size_t q) {
         const std::size_t k0 = q * stride;
         BodyField& body = bodies.field(p.body[q]);
+        double* mass = body.mass.data();
+        Vector2* momentum = body.momentum.data();
         const double m = e.inertialMass(q);  // m_p, or scaled (MassScaling.H)
         for (int a = 0; a < stride; ++a) {
-            const int n = w.node[k0 + a];
-            const double N = w.N[k0 + a];
+            const int n = node[k0 + a];
+            const double N = Nw[k0 + a];
             if (n < 0) continue;
-            grid.markActive(n);  // also at N = 0: its gradient may still carry force
+            markActive(n);  // also at N = 0: its gradient may still carry force
             // The body's own field, from its particles only (seed G.4 step 1).
-            body.mass[n] += N * m;
-            body.momentum[n] += (N * m) * e.carriedVelocity(q, n, p.x[q]);
+            mass[n] += N * m;
+            momentum[n] += (N * m) * e.carriedVelocity(q, n, p.x[q]);
         }
     });
     grid.collectActive();
@@ -138,17 +144,20 @@ void MultiField::remapVelocity(EngineView& e, double tNew, double dt)
         grid.momentum[n].setZero();
         for (int b = 0; b < bodies.nBodies(); ++b) bodies.field(b).momentum[n].setZero();
     });
-    e.strips.forEach([&](std::size_t q) {
+    const int* node = w.node.data();
+    const double* Nw = w.N.data();
+    Vector2* gridMomentum = grid.momentum.data();
+    e.strips.forEach([&, node, Nw, gridMomentum, stride](std::size_t q) {
         const std::size_t k0 = q * stride;
-        BodyField& body = bodies.field(p.body[q]);
+        Vector2* bodyMomentum = bodies.field(p.body[q]).momentum.data();
         const Vector2 xp = e.remapCentre(q, dt);
         const double m = e.inertialMass(q);
         for (int a = 0; a < stride; ++a) {
-            const int n = w.node[k0 + a];
+            const int n = node[k0 + a];
             if (n < 0) continue;
-            const Vector2 momentum = (w.N[k0 + a] * m) * e.carriedVelocity(q, n, xp);
-            grid.momentum[n] += momentum;
-            body.momentum[n] += momentum;
+            const Vector2 momentum = (Nw[k0 + a] * m) * e.carriedVelocity(q, n, xp);
+            gridMomentum[n] += momentum;
+            bodyMomentum[n] += momentum;
         }
     });
     grid.velocitiesFromMomenta();
