@@ -98,18 +98,21 @@ void Grid::allocate()
 
 void Grid::resetFields()
 {
-    // Only nodes touched last step hold non-zero values.
-#pragma omp parallel for schedule(static) if (static_cast<long>(active.size()) >= minParallelWork())
-    for (std::size_t k = 0; k < active.size(); ++k) {
-        const int n = active[k];
-        mass[n] = 0.0;
-        momentum[n].setZero();
-        velocity[n].setZero();
-        fInt[n].setZero();
-        fExt[n].setZero();
-        accel[n].setZero();
-        if (!fContact.empty()) fContact[n].setZero();
-        isActive_[n] = NodeMark::idle;
+    // Only nodes touched last step hold non-zero values. The arrays' pointers in locals:
+    // Eigen's SSE stores may alias anything (doc/threading.md).
+    const int* nodes = active.data();
+    const long count = static_cast<long>(active.size());
+    double* m = mass.data();
+    Vector2* fields[] = {momentum.data(), velocity.data(), fInt.data(), fExt.data(), accel.data()};
+    Vector2* contact = fContact.empty() ? nullptr : fContact.data();
+    NodeMark* marks = isActive_.data();
+#pragma omp parallel for schedule(static) if (count >= minParallelWork())
+    for (long k = 0; k < count; ++k) {
+        const int n = nodes[k];
+        m[n] = 0.0;
+        for (Vector2* field : fields) field[n].setZero();
+        if (contact) contact[n].setZero();
+        marks[n] = NodeMark::idle;
     }
     active.clear();
 }
