@@ -65,10 +65,23 @@ void ParticleStrips::assign(const Grid& grid, const Particles& p)
         const long begin = n * t / threads, end = n * (t + 1) / threads;
         std::vector<int>& next = fill_[static_cast<std::size_t>(t)];
         next.assign(static_cast<std::size_t>(nStrips_), 0);
+        // Neighbouring particles mostly share a strip (the particles are sorted by cell): its
+        // count stays in a register while they do, instead of a load and store per particle,
+        // each waiting for the last.
+        int* strip = strip_.data();
+        int* order = order_.data();
+        int run = -1, counted = 0;
         for (long q = begin; q < end; ++q) {
-            strip_[q] = stripOf(grid, p.x[q]);
-            ++next[strip_[q]];
+            const int s = stripOf(grid, p.x[q]);
+            strip[q] = s;
+            if (s != run) {
+                if (run >= 0) next[run] += counted;
+                run = s;
+                counted = 0;
+            }
+            ++counted;
         }
+        if (run >= 0) next[run] += counted;
 #pragma omp barrier
 #pragma omp single
         {
@@ -84,7 +97,17 @@ void ParticleStrips::assign(const Grid& grid, const Particles& p)
                 start_[s + 1] = at;
             }
         }
-        for (long q = begin; q < end; ++q) order_[next[strip_[q]]++] = static_cast<int>(q);
+        run = -1;
+        int at = 0;  // the next place of strip `run`
+        for (long q = begin; q < end; ++q) {
+            const int s = strip[q];
+            if (s != run) {
+                if (run >= 0) next[run] = at;
+                run = s;
+                at = next[s];
+            }
+            order[at++] = static_cast<int>(q);
+        }
     }
 }
 
