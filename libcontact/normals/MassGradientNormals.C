@@ -7,16 +7,6 @@ namespace gpic {
 
 MassGradientNormals::MassGradientNormals(const Dictionary&, const ContactScene& scene) : nBodies_(scene.nBodies()) {}
 
-namespace {
-//- floor(v) as an int for v well inside the int range (a particle inside the grid), without
-//  the library call the baseline x86-64 build makes for std::floor.
-int floorOf(double v)
-{
-    const int k = static_cast<int>(v);
-    return k - (v < k);
-}
-} // namespace
-
 void MassGradientNormals::place(const Grid& grid, const Particles& p, const std::vector<int>& nodes)
 {
     nx_ = grid.nx();
@@ -24,40 +14,35 @@ void MassGradientNormals::place(const Grid& grid, const Particles& p, const std:
     h_ = grid.cellSize();
     const auto cells = static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_);
     density_.assign(static_cast<std::size_t>(nBodies_) * cells, 0.0);
-    // Only the cells around the contact nodes are summed (outward() reads no others): most
-    // particles are far from contact, and this pass runs on one thread, in particle order,
-    // so that each sum is the same at any thread count.
-    needed_.assign(cells, 0);
+    // Only the box of cells around the contact nodes is summed (outward() reads no others):
+    // most particles are far from contact. One thread, in particle order, so that each sum
+    // is the same at any thread count.
     int iLow = nx_, iHigh = -1, jLow = ny_, jHigh = -1;
     for (int n : nodes) {
         const int i = n % (nx_ + 1), j = n / (nx_ + 1);
-        for (int cj = std::max(j - 1, 0); cj <= std::min(j, ny_ - 1); ++cj)
-            for (int ci = std::max(i - 1, 0); ci <= std::min(i, nx_ - 1); ++ci) {
-                needed_[ci + cj * nx_] = 1;
-                iLow = std::min(iLow, ci), iHigh = std::max(iHigh, ci);
-                jLow = std::min(jLow, cj), jHigh = std::max(jHigh, cj);
-            }
+        iLow = std::min(iLow, std::max(i - 1, 0)), iHigh = std::max(iHigh, std::min(i, nx_ - 1));
+        jLow = std::min(jLow, std::max(j - 1, 0)), jHigh = std::max(jHigh, std::min(j, ny_ - 1));
     }
     const Vector2 origin = grid.origin(), h = h_;
-    // A particle reaches the centres of the cells within half a cell of its own: one outside
-    // these bounds (a cell's margin) reaches no needed cell.
+    // A particle reaches the centres of the cells within half a cell of its own: one beyond
+    // these bounds (a cell's margin) adds to no cell of the box, and every cell of the box
+    // gets all of its particles.
     const Vector2 low = origin + Vector2((iLow - 1) * h.x(), (jLow - 1) * h.y());
     const Vector2 high = origin + Vector2((iHigh + 2) * h.x(), (jHigh + 2) * h.y());
     const Vector2* x = p.x.data();
     const double* m = p.m.data();
     const int* body = p.body.data();
-    const std::uint8_t* needed = needed_.data();
     for (std::size_t q = 0; q < p.size(); ++q) {
         if (x[q].x() < low.x() || x[q].x() >= high.x() || x[q].y() < low.y() || x[q].y() >= high.y()) continue;
         // Element centres within one cell of the particle, with bilinear weights S1.
         const Vector2 s = Vector2((x[q] - origin).array() / h.array()) - Vector2(0.5, 0.5);
-        const int i0 = floorOf(s.x()), j0 = floorOf(s.y());
+        const int i0 = Grid::floorToInt(s.x()), j0 = Grid::floorToInt(s.y());
         const double fx = s.x() - i0, fy = s.y() - j0;
         double* rho = density_.data() + static_cast<std::size_t>(body[q]) * cells;
         for (int b = 0; b < 2; ++b)
             for (int a = 0; a < 2; ++a) {
                 const int i = i0 + a, j = j0 + b;
-                if (i < 0 || j < 0 || i >= nx_ || j >= ny_ || !needed[i + j * nx_]) continue;
+                if (i < 0 || j < 0 || i >= nx_ || j >= ny_) continue;
                 const double S1 = (a ? fx : 1.0 - fx) * (b ? fy : 1.0 - fy);
                 rho[i + j * nx_] += m[q] * S1;
             }
