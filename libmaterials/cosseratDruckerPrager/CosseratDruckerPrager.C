@@ -95,11 +95,6 @@ CosseratDruckerPrager::CosseratDruckerPrager(const Dictionary& dict)
     info() << line.str() << '\n';
 }
 
-double CosseratDruckerPrager::q(const CosseratVector& s) const
-{
-    return std::sqrt(std::max(0.5 * s.dot(P_ * s), 0.0));
-}
-
 int CosseratDruckerPrager::returnMap(CosseratVector& s, double& dLambda, CosseratVector& dEpsP) const
 {
     const CosseratVector trial = s;
@@ -145,11 +140,18 @@ void CosseratDruckerPrager::updateStress(Particles& p, const ParticleBlock& bloc
             state[i] = code(YieldState::disconnected);
             continue;
         }
-        CosseratElasticity::rotate(p.sigma[i], c.sigma21[i], c.mu[i], p.dOmega[i]);
-        elastic_.addElasticIncrement(p.sigma[i], c.sigma21[i], c.mu[i], p.dEps[i], c.dRotation[i], c.dKappa[i]);
-        CosseratVector s = cosseratStress(p, i, l);
+        // The trial in locals: the particle's arrays are written once, at the end.
+        SymTensor sigma = p.sigma[i];
+        double sigma21 = c.sigma21[i];
+        Vector2 mu = c.mu[i];
+        CosseratElasticity::rotate(sigma, sigma21, mu, p.dOmega[i]);
+        elastic_.addElasticIncrement(sigma, sigma21, mu, p.dEps[i], c.dRotation[i], c.dKappa[i]);
+        CosseratVector s = cosseratStress(sigma, sigma21, mu, l);
         const double qs = q(s);
         if (!(qs + alpha_ * meanStress(s) - c_ > tolerance_ * qs)) {
+            p.sigma[i] = sigma;
+            c.sigma21[i] = sigma21;
+            c.mu[i] = mu;
             state[i] = code(YieldState::elastic);
             continue;
         }

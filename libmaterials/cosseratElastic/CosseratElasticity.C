@@ -40,34 +40,6 @@ CosseratMatrix CosseratElasticity::D() const
     return D;
 }
 
-void CosseratElasticity::rotate(SymTensor& s, double& s21, Vector2& mu, double w)
-{
-    if (w == 0.0) return;
-    const double c = std::cos(w), sn = std::sin(w);
-    const double skew = 0.5 * (s[XY] - s21);
-    const double a = s[XX], b = 0.5 * (s[XY] + s21), d = s[YY];
-    s[XX] = c * c * a + 2.0 * sn * c * b + sn * sn * d;
-    s[YY] = sn * sn * a - 2.0 * sn * c * b + c * c * d;
-    const double sym = sn * c * (d - a) + (c * c - sn * sn) * b;
-    s[XY] = sym + skew;
-    s21 = sym - skew;
-    mu = Vector2(c * mu.x() + sn * mu.y(), -sn * mu.x() + c * mu.y());
-}
-
-void CosseratElasticity::addElasticIncrement(SymTensor& s, double& s21, Vector2& mu, const SymTensor& de,
-                                             double r, const Vector2& dKappa) const
-{
-    const double a1 = c1G2(), a2 = c2G2();
-    s[XX] += a1 * de[XX] + a2 * de[YY];  // eq. 2.7.15 with d lambda33 = 0
-    s[YY] += a2 * de[XX] + a1 * de[YY];
-    s[ZZ] += a2 * (de[XX] + de[YY]);
-    // (G+Gc) dl12 + (G-Gc) dl21 with dl12 = de12 + r, dl21 = de12 - r
-    const double sym = 2.0 * G_ * de[XY], skew = 2.0 * Gc_ * r;
-    s[XY] += sym + skew;
-    s21 += sym - skew;
-    mu += (2.0 * G_ * l_ * l_) * dKappa;  // eq. I.2.13
-}
-
 double CosseratElasticity::waveSpeed(double rho) const
 {
     return std::sqrt(std::max(c1G2(), G_ + Gc_) / rho);
@@ -79,15 +51,6 @@ double CosseratElasticity::rotationalTimeStep(double rho, double h) const
     const double cr2 = 2.0 * G_ * l_ * l_ / (rho * J33_);
     const double inverse2 = cr2 / (h * h) + Gc_ / (rho * J33_);
     return inverse2 > 0 ? 1.0 / std::sqrt(inverse2) : 1e300;
-}
-
-CosseratVector cosseratStress(const Particles& p, std::size_t i, double l)
-{
-    CosseratVector s;
-    const SymTensor& t = p.sigma[i];
-    const Vector2& mu = p.polar.mu[i];
-    s << t[XX], t[YY], t[ZZ], t[XY], p.polar.sigma21[i], l > 0 ? mu.x() / l : 0.0, l > 0 ? mu.y() / l : 0.0;
-    return s;
 }
 
 void setCosseratStress(Particles& p, std::size_t i, const CosseratVector& s, double l)

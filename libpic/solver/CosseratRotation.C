@@ -83,20 +83,29 @@ void CosseratRotation::constrain(const Grid& grid, std::vector<double>& field) c
 
 void CosseratRotation::spinToGrid(EngineView& e, bool withInertia)
 {
-    CosseratField& r = r_;
     const Particles& p = e.particles;
     const ShapeWeights& weights = e.weights;
     const int stride = weights.stride;
-    e.strips.forEach([&](std::size_t q) {
-        if (!isPolar(e, q)) return;
-        const double mJ = e.inertialMass(q) * r.materialJ[static_cast<std::size_t>(p.material[q])];
+    // Pointers captured by value (ParticleStrips::forEach, doc/threading.md).
+    const PolarTest polar = polarTest(e);
+    const int* node = weights.node.data();
+    const double* Nw = weights.N.data();
+    const int* material = p.material.data();
+    const double* omega = p.polar.omega.data();
+    const double* J = r_.materialJ.data();
+    double* inertia = r_.inertia.data();
+    double* momentum = r_.momentum.data();
+    e.strips.forEach([&e, polar, node, Nw, material, omega, J, inertia, momentum, stride, withInertia](std::size_t q) {
+        if (!polar(q)) return;
+        const double mJ = e.inertialMass(q) * J[material[q]];
+        const double w = omega[q];  // held: the stores below are doubles too
         const std::size_t k0 = q * stride;
         for (int a = 0; a < stride; ++a) {
-            const int n = weights.node[k0 + a];
+            const int n = node[k0 + a];
             if (n < 0) continue;
-            const double NmJ = weights.N[k0 + a] * mJ;
-            if (withInertia) r.inertia[n] += NmJ;  // lumped rotational inertia
-            r.momentum[n] += NmJ * p.polar.omega[q];  // spin momentum, as eq. 2.4.1
+            const double NmJ = Nw[k0 + a] * mJ;
+            if (withInertia) inertia[n] += NmJ;  // lumped rotational inertia
+            momentum[n] += NmJ * w;  // spin momentum, as eq. 2.4.1
         }
     });
 }
@@ -123,27 +132,41 @@ void CosseratRotation::toGrid(EngineView& e)
 
 void CosseratRotation::forces(EngineView& e)
 {
-    CosseratField& r = r_;
     const Particles& p = e.particles;
     const ShapeWeights& weights = e.weights;
     const int stride = weights.stride;
-    e.strips.forEach([&](std::size_t q) {
-        if (!isPolar(e, q)) return;
-        const double V = p.V[q];
-        const double skew = p.sigma[q][XY] - p.polar.sigma21[q];  // sigma12 - sigma21
-        const Vector2& mu = p.polar.mu[q];
+    // Pointers captured by value (ParticleStrips::forEach, doc/threading.md).
+    const PolarTest polar = polarTest(e);
+    const int* node = weights.node.data();
+    const double* Nw = weights.N.data();
+    const Vector2* dNw = weights.dN.data();
+    const int* body = p.body.data();
+    const double* volume = p.V.data();
+    const SymTensor* sigma = p.sigma.data();
+    const double* sigma21 = p.polar.sigma21.data();
+    const Vector2* couple = p.polar.mu.data();
+    double* moment = r_.moment.data();
+    Vector2* fInt = e.grid.fInt.data();
+    const GridCoupling& coupling = e.coupling;
+    e.strips.forEach([&coupling, polar, node, Nw, dNw, body, volume, sigma, sigma21, couple, moment, fInt,
+                      stride](std::size_t q) {
+        if (!polar(q)) return;
+        const double V = volume[q];
+        const double skew = sigma[q][XY] - sigma21[q];  // sigma12 - sigma21
+        const Vector2 mu = couple[q];
         const std::size_t k0 = q * stride;
-        BodyField* body = e.coupling.bodyField(p.body[q]);
+        BodyField* field = coupling.bodyField(body[q]);
+        Vector2* bodyForce = field ? field->force.data() : nullptr;
         for (int a = 0; a < stride; ++a) {
-            const int n = weights.node[k0 + a];
+            const int n = node[k0 + a];
             if (n < 0) continue;
-            const Vector2& dN = weights.dN[k0 + a];
+            const Vector2 dN = dNw[k0 + a];
             // Balance of angular momentum, weak form: -int (mu3j N_,j + N (sigma12 - sigma21)) dV
-            r.moment[n] -= V * (mu.x() * dN.x() + mu.y() * dN.y() + weights.N[k0 + a] * skew);
+            moment[n] -= V * (mu.x() * dN.x() + mu.y() * dN.y() + Nw[k0 + a] * skew);
             // f_int,2 = -V (sigma21 N_,1 + sigma22 N_,2): computeForces used sigma12 in place of sigma21.
             const double correction = V * skew * dN.x();
-            e.grid.fInt[n].y() += correction;
-            if (body) body->force[n].y() += correction;
+            fInt[n].y() += correction;
+            if (bodyForce) bodyForce[n].y() += correction;
         }
     });
 }
@@ -173,61 +196,85 @@ void CosseratRotation::strain(EngineView& e, double dt)
 {
     auto timer = e.timers.time("rotation");
     Particles& p = e.particles;
-    const CosseratField& r = r_;
     const ShapeWeights& weights = e.weights;
     const int stride = weights.stride;
-    parallelFor(static_cast<long>(p.size()), [&](long q) {
-        if (!isPolar(e, static_cast<std::size_t>(q))) return;
+    // Pointers held by value: the stores of Vector2 below may alias anything (doc/threading.md).
+    const PolarTest polar = polarTest(e);
+    const int* node = weights.node.data();
+    const double* Nw = weights.N.data();
+    const Vector2* dNw = weights.dN.data();
+    const double* rate = r_.rate.data();
+    const double* dOmega = p.dOmega.data();
+    double* dRotation = p.polar.dRotation.data();
+    Vector2* dKappa = p.polar.dKappa.data();
+    Vector2* kappa = p.polar.kappa.data();
+    parallelFor(static_cast<long>(p.size()), [=](long q) {
+        if (!polar(static_cast<std::size_t>(q))) return;
         double w = 0.0;
         Vector2 gradient = Vector2::Zero();
         const std::size_t k0 = q * stride;
         for (int a = 0; a < stride; ++a) {
-            const int n = weights.node[k0 + a];
+            const int n = node[k0 + a];
             if (n < 0) continue;
-            w += weights.N[k0 + a] * r.rate[n];
-            gradient += r.rate[n] * weights.dN[k0 + a];
+            w += Nw[k0 + a] * rate[n];
+            gradient += rate[n] * dNw[k0 + a];
         }
         // eq. 2.6.3: lambda12 = u1,2 + w3c, lambda21 = u2,1 - w3c, so their half difference
         // grows by the spin of the step dOmega = dt (v1,2 - v2,1)/2 plus dt w3c.
-        p.polar.dRotation[q] = p.dOmega[q] + dt * w;
-        p.polar.dKappa[q] = dt * gradient;  // eq. 2.6.2: kappa3j = w3c,j
-        p.polar.kappa[q] += p.polar.dKappa[q];
+        dRotation[q] = dOmega[q] + dt * w;
+        dKappa[q] = dt * gradient;  // eq. 2.6.2: kappa3j = w3c,j
+        kappa[q] += dKappa[q];
     });
 }
 
 void CosseratRotation::addWork(EngineView& e)
 {
     Particles& p = e.particles;
-    parallelFor(static_cast<long>(p.size()), [&](long q) {
-        if (!isPolar(e, static_cast<std::size_t>(q))) {
-            p.polar.sigma21[q] = p.sigma[q][XY];  // a nonpolar stress is symmetric
+    const PolarTest polar = polarTest(e);
+    const double* V = p.V.data();
+    const SymTensor* sigma = p.sigma.data();
+    const SymTensor* dEps = p.dEps.data();
+    const double* dRotation = p.polar.dRotation.data();
+    const Vector2* mu = p.polar.mu.data();
+    const Vector2* dKappa = p.polar.dKappa.data();
+    double* sigma21 = p.polar.sigma21.data();
+    double* work = p.work.data();
+    parallelFor(static_cast<long>(p.size()), [=](long q) {
+        if (!polar(static_cast<std::size_t>(q))) {
+            sigma21[q] = sigma[q][XY];  // a nonpolar stress is symmetric
             return;
         }
         // sigma12 dl12 + sigma21 dl21 + mu . dkappa beyond the 2 sigma12 de12 of the nonpolar work
-        const double skew = p.sigma[q][XY] - p.polar.sigma21[q];
-        p.work[q] += 0.5 * p.V[q] * (skew * (p.polar.dRotation[q] - p.dEps[q][XY]) + p.polar.mu[q].dot(p.polar.dKappa[q]));
+        const double skew = sigma[q][XY] - sigma21[q];
+        work[q] += 0.5 * V[q] * (skew * (dRotation[q] - dEps[q][XY]) + mu[q].dot(dKappa[q]));
     });
 }
 
 void CosseratRotation::toParticles(EngineView& e, double dt)
 {
     Particles& p = e.particles;
-    const CosseratField& r = r_;
     const ShapeWeights& weights = e.weights;
     const int stride = weights.stride;
     const double flip = e.transfer.rotationFlipShare(dt);  // FLIP under every transfer but FLIP's own blend
-    parallelFor(static_cast<long>(p.size()), [&](long q) {
-        if (!isPolar(e, static_cast<std::size_t>(q))) return;
+    const PolarTest polar = polarTest(e);
+    const int* node = weights.node.data();
+    const double* Nw = weights.N.data();
+    const double* rate = r_.rate.data();
+    const double* accel = r_.accel.data();
+    double* rotation = p.polar.w.data();
+    double* omega = p.polar.omega.data();
+    parallelFor(static_cast<long>(p.size()), [=](long q) {
+        if (!polar(static_cast<std::size_t>(q))) return;
         double w = 0.0, a = 0.0;
         const std::size_t k0 = q * stride;
         for (int k = 0; k < stride; ++k) {
-            const int n = weights.node[k0 + k];
+            const int n = node[k0 + k];
             if (n < 0) continue;
-            w += weights.N[k0 + k] * r.rate[n];
-            a += weights.N[k0 + k] * r.accel[n];
+            w += Nw[k0 + k] * rate[n];
+            a += Nw[k0 + k] * accel[n];
         }
-        p.polar.w[q] += dt * w;                                                     // as eq. 2.4.7
-        p.polar.omega[q] = flip * (p.polar.omega[q] + dt * a) + (1.0 - flip) * w;  // as eq. 2.4.8
+        rotation[q] += dt * w;                                      // as eq. 2.4.7
+        omega[q] = flip * (omega[q] + dt * a) + (1.0 - flip) * w;  // as eq. 2.4.8
     });
 }
 
