@@ -12,6 +12,8 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <regex>
+#include <sstream>
 #include <thread>
 
 using namespace gpic::test;
@@ -81,6 +83,8 @@ void stopsCleanlyOn(int signal, const std::string& name)
         if (line.rfind("Warning:", 0) != 0) errors.push_back(line);
     ASSERT_EQ(errors.size(), 1u) << err;
     EXPECT_EQ(errors[0].rfind("Error: run stopped by " + name + " at t = ", 0), 0u) << errors[0];
+    // The wall time of the segment, which a run made in segments adds up.
+    EXPECT_TRUE(std::regex_search(errors[0], std::regex(R"(\(step [0-9]+, wall [0-9]+\.[0-9] s\))"))) << errors[0];
 
     // The state written is the latest time directory, named in the message, in the index.
     // On a loaded machine the signal may land while 0.1 is still being finished: then 0.1

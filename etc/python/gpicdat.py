@@ -48,6 +48,53 @@ def run_reached(log_path):
     return particles, steps, wall
 
 
+def segment_wall(log_path):
+    """Wall seconds of one segment of a run: its End line, its stop line ('run stopped by
+    SIGTERM at t = ... (step N, wall W s)'), else its last progress line (cut off)."""
+    try:
+        return run_summary(log_path)[2]
+    except RuntimeError:
+        pass
+    with open(log_path) as f:
+        for line in f:
+            m = re.search(r'run stopped by \S+ at t = \S+ s \(step \d+, wall (\S+) s\)', line)
+            if m:
+                return float(m.group(1))
+    return run_reached(log_path)[2]
+
+
+def run_in_segments(case):
+    """(particles, steps, wall seconds) of a run made in segments: picSolver stopped (a
+    signal, the end of a sitting) and restarted from its last time directory, the earlier
+    logs kept as log.picSolver.1, .2, ... before log.picSolver, the last. Steps count from
+    the run's first step (the time index it carried on from, plus the last segment's);
+    wall adds the segments' (a segment cut off between writes counts its lost steps too).
+    A run of one segment gives what run_reached gives."""
+    import glob
+    import os
+    earlier = sorted(glob.glob(os.path.join(case, 'log.picSolver.[0-9]*')),
+                     key=lambda p: int(p.rsplit('.', 1)[1]))
+    last = os.path.join(case, 'log.picSolver')
+    wall = sum(segment_wall(log) for log in earlier)
+    try:
+        particles, steps, last_wall = run_summary(last)
+    except RuntimeError:  # not finished: its progress lines count from the run's first step
+        particles, steps, last_wall = run_reached(last)
+        return particles, steps, round(wall + last_wall, 3)
+    start = None
+    with open(last) as f:
+        for line in f:
+            m = re.match(r'Case \S+: .*starting at t = \S+ \((\S+)\)', line)
+            if m:
+                start = m.group(1)
+    index = 0
+    time_file = os.path.join(case, start, 'uniform', 'time') if start else ''
+    if time_file and os.path.exists(time_file):
+        m = re.search(r'index\s+(\d+);', open(time_file).read())
+        index = int(m.group(1)) if m else 0
+    return particles, index + steps, round(wall + last_wall, 3)
+
+
 def read_particles(path):
     """Point arrays of a particles.vtp (raw appended binary, UInt64 headers), by name.
 

@@ -307,7 +307,7 @@ long Simulation::run()
             case_->stages->beginNext(solver_, time_, step_);
             restartGuard();
         }
-        honourStopSignal(writtenLast);
+        honourStopSignal(writtenLast, wallStart);
         reportProgress(wallStart, lastProgress, tStart);
     }
     if (!writtenLast) write();
@@ -394,13 +394,16 @@ StageEvent Simulation::afterStep()
     return stage;
 }
 
-void Simulation::honourStopSignal(bool writtenLast)
+void Simulation::honourStopSignal(bool writtenLast, Clock::time_point wallStart)
 {
     const int signal = StopSignals::received();
     if (!signal) return;
     if (!writtenLast) write();
+    // The wall time too: a run made in segments adds them up (gpicdat.run_in_segments).
+    std::ostringstream wall;
+    wall << std::fixed << std::setprecision(1) << std::chrono::duration<double>(Clock::now() - wallStart).count();
     throw StopRequest(signal, StopSignals::name(signal) + " at t = " + exactNumber(time_) + " s (step " +
-                                  std::to_string(step_) + "): the state is written to " +
+                                  std::to_string(step_) + ", wall " + wall.str() + " s): the state is written to " +
                                   (fs::path(options_.caseDir) / onDisk_.name).string());
 }
 
