@@ -370,17 +370,19 @@ void MpmSolver::updateStress(double dt)
     {
         auto timer = timers_.time("strain");
         const int stride = weights_.stride;
+        const int* node = weights_.node.data();  // in locals, as in gridToParticles
+        const Vector2* dNw = weights_.dN.data();
         // Velocity gradient L_ab = sum_i v_i,a dN_i/dx_b (B v of eq. 2.4.5, plus spin).
-        const auto velocityGradient = [&](std::size_t q) {
+        const auto velocityGradient = [&, node, dNw, stride](std::size_t q) {
             Eigen::Matrix2d L = Eigen::Matrix2d::Zero();
             if (driverOf(q)) return L;  // rigid: no strain, no spin, no volume change
             const std::size_t k0 = q * stride;
             // With a contact pass each body deforms with its own velocity field.
-            const std::vector<Vector2>& velocity = coupling_->velocity(grid_, coupling_->fieldOf(p.body[q]));
+            const Vector2* velocity = coupling_->velocity(grid_, coupling_->fieldOf(p.body[q])).data();
             for (int a = 0; a < stride; ++a) {
-                const int n = weights_.node[k0 + a];
+                const int n = node[k0 + a];
                 if (n < 0) continue;
-                L.noalias() += velocity[n] * weights_.dN[k0 + a].transpose();
+                L.noalias() += velocity[n] * dNw[k0 + a].transpose();
             }
             return L;
         };
@@ -439,26 +441,32 @@ void MpmSolver::gridToParticles(double dt)
     const int stride = weights_.stride;
     const auto nParticles = static_cast<long>(p.size());
     const double flip = transfer_->flipShare(dt);
-    const LoopReport report = parallelForChecked(nParticles, [&](long q) {
+    // Pointers in locals: Eigen's SSE stores may alias anything, and what the loop reads
+    // through memory is reloaded after each of them (doc/threading.md).
+    const int* node = weights_.node.data();
+    const double* Nw = weights_.N.data();
+    const LoopReport report = parallelForChecked(nParticles, [&, node, Nw, stride](long q) {
         if (driverOf(q)) return LoopMark::none;  // moved below
         Vector2 vNew = Vector2::Zero(), a = Vector2::Zero(), vStar = Vector2::Zero();
         const std::size_t k0 = q * stride;
         // With a contact pass each body moves with its own corrected field (seed G.4 steps 3-4).
         const int f = coupling_->fieldOf(p.body[q]);
-        const std::vector<Vector2>& velocity = coupling_->velocity(grid_, f);
-        const std::vector<Vector2>& accel = coupling_->accel(grid_, f);
-        const std::vector<Vector2>* star = filter_ ? &filter_->field(f) : nullptr;
+        const std::vector<Vector2>& velocityField = coupling_->velocity(grid_, f);
+        const Vector2* velocity = velocityField.data();
+        const Vector2* accel = coupling_->accel(grid_, f).data();
+        const bool xpic = filter_ != nullptr;
+        const Vector2* star = xpic ? filter_->field(f).data() : nullptr;
         for (int k = 0; k < stride; ++k) {
-            const int n = weights_.node[k0 + k];
+            const int n = node[k0 + k];
             if (n < 0) continue;
-            const double N = weights_.N[k0 + k];
+            const double N = Nw[k0 + k];
             vNew += N * velocity[n];
             a += N * accel[n];
-            if (star) vStar += N * (*star)[n];
+            if (xpic) vStar += N * star[n];
         }
-        if (affine_) affine_->form(p, weights_, static_cast<std::size_t>(q), velocity, p.x[q]);
+        if (affine_) affine_->form(p, weights_, static_cast<std::size_t>(q), velocityField, p.x[q]);
         p.x[q] += dt * vNew;  // eq. 2.4.7
-        if (star) p.v[q] = vStar + dt * a;  // XPIC: the filtered v^t plus the increment
+        if (xpic) p.v[q] = vStar + dt * a;  // XPIC: the filtered v^t plus the increment
         // eq. 2.4.8 (FLIP), blended with PIC when the FLIP share is below 1: a particle's own
         // velocity beyond what its nodes carry (the FLIP null space, e.g. at a wall that stops
         // its nodes) then decays instead of persisting. PIC and APIC: share 0.
