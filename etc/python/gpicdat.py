@@ -1,4 +1,6 @@
 """Reading granular-pic output for tutorial scripts (standard library only)."""
+import glob
+import os
 import re
 import struct
 
@@ -70,8 +72,6 @@ def run_in_segments(case):
     the run's first step (the time index it carried on from, plus the last segment's);
     wall adds the segments' (a segment cut off between writes counts its lost steps too).
     A run of one segment gives what run_reached gives."""
-    import glob
-    import os
     earlier = sorted(glob.glob(os.path.join(case, 'log.picSolver.[0-9]*')),
                      key=lambda p: int(p.rsplit('.', 1)[1]))
     last = os.path.join(case, 'log.picSolver')
@@ -133,8 +133,6 @@ def read_series(case, function_object, file):
     """Columns of `file` from every postProcessing/<function_object>/<start>/ directory of a
     case, in time order. A restart adds a directory; its lines replace the earlier run's
     from its start on."""
-    import glob
-    import os
     paths = sorted(glob.glob(os.path.join(case, 'postProcessing', function_object, '*', file)),
                    key=lambda p: float(os.path.basename(os.path.dirname(p))))
     series = {}
