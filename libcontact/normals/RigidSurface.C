@@ -33,8 +33,13 @@ void RigidSurface::place(const Particles& p, int body)
 {
     double mass = 0;
     Vector2 c = Vector2::Zero(), c0 = Vector2::Zero();
+    // The body's particles lie in one block of its material: the second sum runs over the
+    // range they span, not over the whole scene again.
+    std::size_t first = p.size(), last = 0;
     for (std::size_t q = 0; q < p.size(); ++q)
         if (p.body[q] == body) {
+            first = std::min(first, q);
+            last = q;
             mass += p.m[q];
             c += p.m[q] * p.x[q];
             c0 += p.m[q] * p.x0[q];
@@ -44,7 +49,7 @@ void RigidSurface::place(const Particles& p, int body)
     c0 /= mass;
     // The rotation of the polar decomposition of A = sum m (x - c)(x0 - c0)^T (2-D closed form).
     Eigen::Matrix2d A = Eigen::Matrix2d::Zero();
-    for (std::size_t q = 0; q < p.size(); ++q)
+    for (std::size_t q = first; q <= last; ++q)
         if (p.body[q] == body) A.noalias() += p.m[q] * (p.x[q] - c) * (p.x0[q] - c0).transpose();
     angle_ = std::atan2(A(1, 0) - A(0, 1), A(0, 0) + A(1, 1));
     cos_ = std::cos(angle_);
