@@ -22,12 +22,14 @@ void MultiField::particlesToGrid(EngineView& e, double t)
     const int* node = w.node.data();
     const double* Nw = w.N.data();
     const Grid::ActiveMarker markActive = grid.activeMarker();
-    e.strips.forEach([&, node, Nw, markActive, stride](std::size_t q) {
+    const bool affine = p.carries(FieldGroup::affine);
+    e.strips.forEach([&, node, Nw, markActive, affine, stride](std::size_t q) {
         const std::size_t k0 = q * stride;
         BodyField& body = bodies.field(p.body[q]);
         double* mass = body.mass.data();
         Vector2* momentum = body.momentum.data();
         const double m = e.inertialMass(q);  // m_p, or scaled (MassScaling.H)
+        const Vector2 vp = p.v[q];           // read once, not after every store (as SingleField)
         for (int a = 0; a < stride; ++a) {
             const int n = node[k0 + a];
             const double N = Nw[k0 + a];
@@ -35,7 +37,7 @@ void MultiField::particlesToGrid(EngineView& e, double t)
             markActive(n);  // also at N = 0: its gradient may still carry force
             // The body's own field, from its particles only (seed G.4 step 1).
             mass[n] += N * m;
-            momentum[n] += (N * m) * e.carriedVelocity(q, n, p.x[q]);
+            momentum[n] += (N * m) * (affine ? e.carriedVelocity(q, n, p.x[q]) : vp);
         }
     });
     grid.collectActive();
@@ -147,15 +149,17 @@ void MultiField::remapVelocity(EngineView& e, double tNew, double dt)
     const int* node = w.node.data();
     const double* Nw = w.N.data();
     Vector2* gridMomentum = grid.momentum.data();
-    e.strips.forEach([&, node, Nw, gridMomentum, stride](std::size_t q) {
+    const bool affine = p.carries(FieldGroup::affine);
+    e.strips.forEach([&, node, Nw, gridMomentum, affine, stride](std::size_t q) {
         const std::size_t k0 = q * stride;
         Vector2* bodyMomentum = bodies.field(p.body[q]).momentum.data();
         const Vector2 xp = e.remapCentre(q, dt);
         const double m = e.inertialMass(q);
+        const Vector2 vp = p.v[q];
         for (int a = 0; a < stride; ++a) {
             const int n = node[k0 + a];
             if (n < 0) continue;
-            const Vector2 momentum = (Nw[k0 + a] * m) * e.carriedVelocity(q, n, xp);
+            const Vector2 momentum = (Nw[k0 + a] * m) * (affine ? e.carriedVelocity(q, n, xp) : vp);
             gridMomentum[n] += momentum;
             bodyMomentum[n] += momentum;
         }

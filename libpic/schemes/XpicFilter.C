@@ -18,12 +18,13 @@ void XpicFilter::at(StepPoint, EngineView& e, double dt)
         scratch_[2 * f].resize(nodes);
         scratch_[2 * f + 1].resize(nodes);
         if (isRigidField(f)) continue;  // a rigid body's particles follow their driver
-        const std::vector<Vector2>& v = coupling.velocity(grid, f);
-        const std::vector<Vector2>& a = coupling.accel(grid, f);
-        std::vector<Vector2>& w = scratch_[2 * f];
-        grid.forEachActiveNode([&](int n) {
+        const Vector2* v = coupling.velocity(grid, f).data();
+        const Vector2* a = coupling.accel(grid, f).data();
+        Vector2* w = scratch_[2 * f].data();
+        Vector2* filtered = filtered_[f].data();
+        grid.forEachActiveNode([=](int n) {
             w[n] = v[n] - dt * a[n];  // v^t with its conditions: the velocity the update started from
-            filtered_[f][n] = double(order) * w[n];
+            filtered[n] = double(order) * w[n];
         });
     }
     const Particles& p = e.particles;
@@ -34,38 +35,54 @@ void XpicFilter::at(StepPoint, EngineView& e, double dt)
         binomial *= double(order - k + 1) / double(k);  // C(m, k)
         const double coefficient = (k % 2 == 0 ? -1.0 : 1.0) * binomial;
         for (int f = 0; f < nFields; ++f) {
-            std::vector<Vector2>& next = scratch_[2 * f + 1];
-            grid.forEachActiveNode([&](int n) { next[n].setZero(); });
+            Vector2* next = scratch_[2 * f + 1].data();
+            grid.forEachActiveNode([=](int n) { next[n].setZero(); });
         }
-        // One projection grid -> particles -> grid per field: S^T M_p S w, then / m_i.
-        e.strips.forEach([&](std::size_t q) {
-            const int f = coupling.fieldOf(p.body[q]);
-            if (isRigidField(f)) return;
-            const std::vector<Vector2>& w = scratch_[2 * f];
-            std::vector<Vector2>& next = scratch_[2 * f + 1];
+        // One projection grid -> particles -> grid per field: S^T M_p S w, then / m_i. The
+        // arrays' pointers in locals and tables: Eigen's SSE stores may alias anything, and
+        // what the loop reads through memory is reloaded after each (doc/threading.md).
+        std::vector<const Vector2*> iterate(nFields);
+        std::vector<Vector2*> projected(nFields);
+        std::vector<char> rigidField(nFields);
+        for (int f = 0; f < nFields; ++f) {
+            iterate[f] = scratch_[2 * f].data();
+            projected[f] = scratch_[2 * f + 1].data();
+            rigidField[f] = isRigidField(f);
+        }
+        const Vector2* const* from = iterate.data();
+        Vector2* const* to = projected.data();
+        const char* skip = rigidField.data();
+        const int* node = weights.node.data();
+        const double* Nw = weights.N.data();
+        const int* body = p.body.data();
+        e.strips.forEach([&e, &coupling, from, to, skip, node, Nw, body, stride](std::size_t q) {
+            const int f = coupling.fieldOf(body[q]);
+            if (skip[f]) return;  // a rigid body's particles follow their driver
+            const Vector2* w = from[f];
+            Vector2* next = to[f];
             const std::size_t k0 = q * stride;
             Vector2 vq = Vector2::Zero();
             const double m = e.inertialMass(q);
             for (int c = 0; c < stride; ++c) {
-                const int n = weights.node[k0 + c];
-                if (n >= 0) vq += weights.N[k0 + c] * w[n];
+                const int n = node[k0 + c];
+                if (n >= 0) vq += Nw[k0 + c] * w[n];
             }
             for (int c = 0; c < stride; ++c) {
-                const int n = weights.node[k0 + c];
-                if (n >= 0) next[n] += (weights.N[k0 + c] * m) * vq;
+                const int n = node[k0 + c];
+                if (n >= 0) next[n] += (Nw[k0 + c] * m) * vq;
             }
         });
         for (int f = 0; f < nFields; ++f) {
             if (isRigidField(f)) continue;
-            const std::vector<double>& mass = coupling.mass(grid, f);
+            const double* mass = coupling.mass(grid, f).data();
             std::vector<Vector2>& next = scratch_[2 * f + 1];
-            grid.forEachActiveNode([&](int n) {
-                next[n] = mass[n] > 0.0 ? Vector2(next[n] / mass[n]) : Vector2::Zero();
+            Vector2* projected = next.data();
+            grid.forEachActiveNode([=](int n) {
+                projected[n] = mass[n] > 0.0 ? Vector2(projected[n] / mass[n]) : Vector2::Zero();
             });
             coupling.constrainFiltered(e, f, next, dt);
-            grid.forEachActiveNode([&](int n) {
-                filtered_[f][n] += coefficient * next[n];
-            });
+            Vector2* filtered = filtered_[f].data();
+            grid.forEachActiveNode([=](int n) { filtered[n] += coefficient * projected[n]; });
             scratch_[2 * f].swap(next);
         }
     }

@@ -24,27 +24,37 @@ void AxisymmetricHoop::addHoopForces(EngineView& e)
     const ShapeWeights& w = e.weights;
     const int stride = w.stride;
     if (cellMean_) means_.average(p, [&](std::size_t q) { return meanStressOf(p, q); }, mean_);
-    e.strips.forEach([&](std::size_t q) {
+    // The arrays' pointers in locals: the stores into the nodes may alias anything, and what
+    // the loop reads through memory is reloaded after each of them (doc/threading.md).
+    const int* node = w.node.data();
+    // -V_p sigma_tt <N_i / r>: N_i(x_p) / r_p at a point, the ring's own weight for uGIMP.
+    const bool own = !w.hoop.empty();
+    const double* weight = own ? w.hoop.data() : w.N.data();
+    const Vector2* dN = w.dN.data();
+    Vector2* fInt = e.grid.fInt.data();
+    const bool cellMean = cellMean_;
+    const double* mean = mean_.data();
+    e.strips.forEach([&e, &p, node, own, weight, dN, fInt, cellMean, mean, stride](std::size_t q) {
         if (e.isRigid(q)) return;  // a rigid body carries no stress
         BodyField* body = e.coupling.bodyField(p.body[q]);
+        Vector2* bodyForce = body ? body->force.data() : nullptr;
         const std::size_t k0 = q * stride;
         // cellMean: the cell's mean stress in place of the particle's own, sigma + dp I; the
         // in-plane part of that shift is the correction -V_p dp grad N_ip.
-        const double dp = cellMean_ ? mean_[q] - meanStressOf(p, q) : 0.0;
-        // -V_p sigma_tt <N_i / r>: N_i(x_p) / r_p at a point, the ring's own weight for uGIMP.
-        const bool own = !w.hoop.empty();
+        const double dp = cellMean ? mean[q] - meanStressOf(p, q) : 0.0;
         const double stt = p.sigma[q][ZZ] + dp;
-        const double hoop = own ? p.V[q] * stt : p.V[q] * stt / p.x[q].x();
+        const double Vp = p.V[q];
+        const double hoop = own ? Vp * stt : Vp * stt / p.x[q].x();
         for (int a = 0; a < stride; ++a) {
-            const int n = w.node[k0 + a];
+            const int n = node[k0 + a];
             if (n < 0) continue;
-            const double f = -hoop * (own ? w.hoop[k0 + a] : w.N[k0 + a]);
-            e.grid.fInt[n].x() += f;
-            if (body) body->force[n].x() += f;
-            if (cellMean_) {
-                const Vector2 shift = -(p.V[q] * dp) * w.dN[k0 + a];
-                e.grid.fInt[n] += shift;
-                if (body) body->force[n] += shift;
+            const double f = -hoop * weight[k0 + a];
+            fInt[n].x() += f;
+            if (bodyForce) bodyForce[n].x() += f;
+            if (cellMean) {
+                const Vector2 shift = -(Vp * dp) * dN[k0 + a];
+                fInt[n] += shift;
+                if (bodyForce) bodyForce[n] += shift;
             }
         }
     });

@@ -337,6 +337,7 @@ void MpmSolver::computeForces()
         }
         const std::size_t k0 = q * stride;
         BodyField* body = coupling_->bodyField(p.body[q]);
+        Vector2* bodyForce = body ? body->force.data() : nullptr;  // in a local, as the others
         const double Vp = p.V[q], mp = p.m[q];
         for (int a = 0; a < stride; ++a) {
             const int n = node[k0 + a];
@@ -348,7 +349,7 @@ void MpmSolver::computeForces()
             fIntAt[n] += fInt;
             fExtAt[n] += fExt;
             // With a contact pass the same terms go to the body's own field too.
-            if (body) body->force[n] += fInt + fExt;
+            if (bodyForce) bodyForce[n] += fInt + fExt;
         }
     });
     reach(StepPoint::afterForces, 0.0);
