@@ -41,17 +41,17 @@ void XpicFilter::at(StepPoint, EngineView& e, double dt)
         // One projection grid -> particles -> grid per field: S^T M_p S w, then / m_i. The
         // arrays' pointers in locals and tables: Eigen's SSE stores may alias anything, and
         // what the loop reads through memory is reloaded after each (doc/threading.md).
-        std::vector<const Vector2*> iterate(nFields);
-        std::vector<Vector2*> projected(nFields);
-        std::vector<char> rigidField(nFields);
+        std::vector<const Vector2*> iterateOf(nFields);
+        std::vector<Vector2*> projectedOf(nFields);
+        std::vector<char> rigidOf(nFields);
         for (int f = 0; f < nFields; ++f) {
-            iterate[f] = scratch_[2 * f].data();
-            projected[f] = scratch_[2 * f + 1].data();
-            rigidField[f] = isRigidField(f);
+            iterateOf[f] = scratch_[2 * f].data();
+            projectedOf[f] = scratch_[2 * f + 1].data();
+            rigidOf[f] = isRigidField(f);
         }
-        const Vector2* const* from = iterate.data();
-        Vector2* const* to = projected.data();
-        const char* skip = rigidField.data();
+        const Vector2* const* from = iterateOf.data();
+        Vector2* const* to = projectedOf.data();
+        const char* skip = rigidOf.data();
         const int* node = weights.node.data();
         const double* Nw = weights.N.data();
         const int* body = p.body.data();
