@@ -13,8 +13,10 @@
 #include "support/CaseRunner.H"
 
 #include <cmath>
+#include <iomanip>
 #include <limits>
 #include <regex>
+#include <sstream>
 
 using namespace gpic;
 using namespace gpic::test;
@@ -406,8 +408,43 @@ TEST(StabilityGuard, anUnstableAutomaticStepStopsOnCreatedEnergyBeforeAnyNaN)
     ASSERT_FALSE(d.line.empty()) << "the run did not stop";
     EXPECT_EQ(d.what.rfind("energy created", 0), 0u) << d.line;
     EXPECT_EQ(d.material, "liar");
+    // The step met the estimate the material gave (a fifth of its wave speed): the message says so.
+    EXPECT_NE(d.line.find("the step met that estimate"), std::string::npos) << d.line;
+    EXPECT_EQ(d.line.find("micro-rotation"), std::string::npos) << d.line;  // a nonpolar material
     EXPECT_EQ(d.line.find("nan"), std::string::npos) << d.line;
     EXPECT_EQ(d.line.find("inf"), std::string::npos) << d.line;
     const Particles good = readState(d.goodDir);
     EXPECT_TRUE(allFinite(good));
+}
+
+// ---- A polar particle: the micro-rotation's step -------------------------------------------
+
+// A polar block (cosseratElastic, Gc = 2 G, l = 2 cm, J33 = l^2 / 8 by default) flying out at
+// 10 m/s. Its micro-rotation's step 1 / sqrt((c_r / h)^2 + Gc / (rho J33)), c_r = l sqrt(2 G /
+// (rho J33)) (doc/cosserat.md), is 0.68 of the translational h / (c + v0) here, so the step the
+// guard says the particle needs is maxCourant times that one, and the message names it.
+TEST(StabilityGuard, aPolarParticleNeedsItsMicroRotationsStep)
+{
+    ScratchDir scratch("guard");
+    const fs::path dir = scratch.path() / "polar";
+    Scene s;
+    s.E = 1e6;
+    s.v0 = 10;
+    s.scheme = "MUSL";
+    const double G = s.E / (2 * (1 + nu)), Gc = 2 * G, l = 0.02, J33 = l * l / 8;
+    std::ostringstream material;
+    material << std::setprecision(17) << "grains { type cosseratElastic; rho " << rho << "; G " << G
+             << "; nu " << nu << "; Gc " << Gc << "; l " << l << "; }";
+    s.material = material.str();
+    writeScene(dir, s);
+    const Diagnosis d = runScene(dir);
+    ASSERT_FALSE(d.line.empty()) << "the block did not leave the grid";
+    EXPECT_NE(d.what.find("outside the grid"), std::string::npos) << d.line;
+    EXPECT_EQ(d.material, "grains");
+    const double cr2 = l * l * 2 * G / (rho * J33);
+    const double rotation = 1 / std::sqrt(cr2 / (h * h) + Gc / (rho * J33));
+    const double translation = h / (waveSpeed(s.E) + s.v0);
+    ASSERT_LT(rotation, 0.8 * translation);  // the scene tests what it says
+    EXPECT_NEAR(d.needed, 0.5 * rotation, 1e-5 * rotation) << d.line;
+    EXPECT_NE(d.line.find("micro-rotation's Courant 0.5 x "), std::string::npos) << d.line;
 }

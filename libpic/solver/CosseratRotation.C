@@ -62,17 +62,11 @@ void CosseratRotation::setUpParticles(Particles& p)
     r_.minInertia = 1e-9 * lightest;
 }
 
-double CosseratRotation::timeStep(const std::vector<std::unique_ptr<Material>>& materials,
-                                  const std::vector<char>& deforms, double minCellSize,
-                                  const std::vector<double>& massScale) const
+double CosseratRotation::timeStep(const Material& material, double minCellSize, double massScale)
 {
-    double dt = 1e300;
-    for (std::size_t m = 0; m < materials.size(); ++m)
-        if (deforms[m] && materials[m]->needsRotation()) {
-            const double step = materials[m]->rotationalTimeStep(minCellSize);
-            dt = std::min(dt, massScale.empty() ? step : step * std::sqrt(massScale[m]));
-        }
-    return dt;
+    if (!material.needsRotation()) return 1e300;
+    const double step = material.rotationalTimeStep(minCellSize);
+    return massScale == 1.0 ? step : step * std::sqrt(massScale);
 }
 
 void CosseratRotation::constrain(const Grid& grid, std::vector<double>& field) const

@@ -163,7 +163,16 @@ const CosseratField& MpmSolver::rotationField() const
 
 double MpmSolver::rotationalTimeStep() const
 {
-    return rotation_ ? rotation_->timeStep(materials_, materialDeforms_, grid_.minCellSize(), massScale_) : 1e300;
+    double dt = 1e300;
+    for (std::size_t m = 0; m < materials_.size(); ++m)
+        if (materialDeforms_[m]) dt = std::min(dt, rotationalTimeStep(m));
+    return dt;
+}
+
+double MpmSolver::rotationalTimeStep(std::size_t m) const
+{
+    if (!rotation_) return 1e300;
+    return CosseratRotation::timeStep(*materials_[m], grid_.minCellSize(), massScale_.empty() ? 1.0 : massScale_[m]);
 }
 
 void MpmSolver::setMassScaling(const MassScaling& scaling)
