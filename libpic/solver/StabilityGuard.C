@@ -274,13 +274,13 @@ std::optional<StabilityTrip> StabilityGuard::check(double t, long step, double d
              << " times the energy budget " << budget_ << " J/m (maxEnergyGain " << maxEnergyGain_
              << "; kinetic energy " << s.kinetic << " J/m, was " << kinetic0_
              << "), the time step is unstable";
-        // A step inside the estimate that still grows energy: a mode the estimate misses
-        // (seen where a thin layer of polar material lies on a rigid body, doc/stability.md).
+        // A step inside the estimate that still grows energy: either a mode the estimate
+        // misses or a growth that is not the step's (doc/stability.md).
         // Within 1 %: the particle's speed, and with it the limit, has moved since the step began.
         const Vector2& v = p.v[worst];
         const std::string within = finite(v) && dt <= 1.01 * neededStep(worst, v)
-                                       ? "; the step met that estimate, so the growth is in a mode it does not "
-                                         "cover: try a smaller maxCourant (or deltaT)"
+                                       ? "; the step met that estimate: run again with a smaller maxCourant (or "
+                                         "deltaT); a growth that comes at the same time is not the step's"
                                        : std::string();
         return StabilityTrip{describe(what.str(), worst, t, step, dt) + within + note(), false};
     }
