@@ -421,7 +421,7 @@ TEST(StabilityGuard, anUnstableAutomaticStepStopsOnCreatedEnergyBeforeAnyNaN)
 
 // A polar block (cosseratElastic, Gc = 2 G, l = 2 cm, J33 = l^2 / 8 by default) flying out at
 // 10 m/s. Its micro-rotation's step 1 / sqrt((c_r / h)^2 + Gc / (rho J33)), c_r = l sqrt(2 G /
-// (rho J33)) (doc/cosserat.md), is 0.68 of the translational h / (c + v0) here, so the step the
+// (rho J33)) (doc/cosserat.md), is 0.52 of the translational h / (c + v0) here, so the step the
 // guard says the particle needs is maxCourant times that one, and the message names it.
 TEST(StabilityGuard, aPolarParticleNeedsItsMicroRotationsStep)
 {
