@@ -289,9 +289,11 @@ long Simulation::run()
     startParts();
     bool writtenLast = true;
     const StopSignals stopSignals;  // SIGINT, SIGTERM: finish the step, write it, stop
+    double particleUpdates = 0;     // the particles each step moves: a silo empties as it runs
     while (!finished()) {
         const double tPrevious = time_;
         const auto stepStart = Clock::now();
+        particleUpdates += static_cast<double>(solver_.particles().size());
         takeStep();
         checkStep();
         if (tuner_) tuner_->stepTook(std::chrono::duration<double>(Clock::now() - stepStart).count());
@@ -312,7 +314,7 @@ long Simulation::run()
     }
     if (!writtenLast) write();
     const long steps = step_ - firstStep;
-    reportEnd(std::chrono::duration<double>(Clock::now() - wallStart).count(), steps);
+    reportEnd(std::chrono::duration<double>(Clock::now() - wallStart).count(), steps, particleUpdates);
     return steps;
 }
 
@@ -428,11 +430,10 @@ void Simulation::reportProgress(Clock::time_point wallStart, Clock::time_point& 
     log() << std::endl;
 }
 
-void Simulation::reportEnd(double wall, long steps)
+void Simulation::reportEnd(double wall, long steps, double particleUpdates)
 {
     log() << "End: t = " << time_ << ", " << steps << " steps, " << solver_.particles().size()
-          << " particles, wall " << wall << " s, "
-          << (wall > 0 ? double(steps) * solver_.particles().size() / wall : 0.0)
+          << " particles, wall " << wall << " s, " << (wall > 0 ? particleUpdates / wall : 0.0)
           << " particle-updates/s, threads "
           << (tuner_ ? std::to_string(tuner_->mostUsed()) + " (chosen by measuring: " + tuner_->summary() + ")"
                      : std::to_string(threadCount()))
