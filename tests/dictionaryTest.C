@@ -132,9 +132,9 @@ TEST(Dictionary, ListsAndNestedLists)
     EXPECT_EQ(d.get<std::vector<int>>("ints"), (std::vector<int>{1, -2, 3}));
     EXPECT_EQ(d.get<std::vector<std::string>>("words"),
               (std::vector<std::string>{"a", "b c", "d"}));
-    const auto pts = d.get<std::vector<Vector2>>("pts");
+    const auto pts = d.get<std::vector<Eigen::Vector2d>>("pts");
     ASSERT_EQ(pts.size(), 2u);
-    EXPECT_EQ(pts[1], Vector2(2, 3));
+    EXPECT_EQ(pts[1], Eigen::Vector2d(2, 3));
     const auto table = d.get<std::vector<std::vector<double>>>("table");
     ASSERT_EQ(table.size(), 3u);
     EXPECT_EQ(table[1], (std::vector<double>{1, 2.5}));
@@ -422,7 +422,7 @@ list ($rho $clay.E);
 )", "f");
     const Dictionary& sand = d.subDict("sand");
     EXPECT_DOUBLE_EQ(sand.get<double>("rho"), 2650);
-    EXPECT_EQ(sand.get<Vector2>("v"), Vector2(1, 2));
+    EXPECT_EQ(sand.get<Eigen::Vector2d>("v"), Eigen::Vector2d(1, 2));
     EXPECT_DOUBLE_EQ(sand.get<double>("braces"), 2650);
     EXPECT_DOUBLE_EQ(sand.subDict("deep").get<double>("r"), 2650);
     EXPECT_EQ(d.get<int>("x"), 5);
@@ -562,14 +562,28 @@ TEST(Dictionary, VectorsArePlane)
 {
     const Dictionary d = Dictionary::parse(
         "g (0 -9.81);\ng3 (0 -9.81 0);\nbad (1 2 3);\nshort (1);\npts ((0 0) (1 0 0.5));\n", "f");
-    EXPECT_EQ(d.get<Vector2>("g"), Vector2(0, -9.81));
-    EXPECT_EQ(d.get<Vector2>("g3"), Vector2(0, -9.81));
-    EXPECT_ERROR_STARTS(d.get<Vector2>("bad"),
+    EXPECT_EQ(d.get<Eigen::Vector2d>("g"), Eigen::Vector2d(0, -9.81));
+    EXPECT_EQ(d.get<Eigen::Vector2d>("g3"), Eigen::Vector2d(0, -9.81));
+    EXPECT_ERROR_STARTS(d.get<Eigen::Vector2d>("bad"),
                         "f:3: keyword 'bad' in dictionary f: the third component must be 0");
-    EXPECT_ERROR_STARTS(d.get<Vector2>("short"),
+    EXPECT_ERROR_STARTS(d.get<Eigen::Vector2d>("short"),
                         "f:4: keyword 'short' in dictionary f: expected a vector (x y)");
-    EXPECT_ERROR_STARTS(d.get<std::vector<Vector2>>("pts"), "f:5: keyword 'pts' in dictionary f: "
+    EXPECT_ERROR_STARTS(d.get<std::vector<Eigen::Vector2d>>("pts"), "f:5: keyword 'pts' in dictionary f: "
                                                             "the third component must be 0");
+}
+
+TEST(Dictionary, VectorsOfThreeComponents)
+{
+    const Dictionary d = Dictionary::parse(
+        "g (0 0 -9.81);\nplane (1 2);\nfour (1 2 3 4);\npts ((0 0 0) (1 0 0.5));\n", "f");
+    EXPECT_EQ(d.get<Eigen::Vector3d>("g"), Eigen::Vector3d(0, 0, -9.81));
+    EXPECT_ERROR_STARTS(d.get<Eigen::Vector3d>("plane"),
+                        "f:2: keyword 'plane' in dictionary f: expected a vector (x y z)");
+    EXPECT_ERROR_STARTS(d.get<Eigen::Vector3d>("four"),
+                        "f:3: keyword 'four' in dictionary f: expected a vector (x y z)");
+    const auto pts = d.get<std::vector<Eigen::Vector3d>>("pts");
+    ASSERT_EQ(pts.size(), 2u);
+    EXPECT_EQ(pts[1], Eigen::Vector3d(1, 0, 0.5));
 }
 
 TEST(Dictionary, UnitBracketsAreSkippedForNumbers)
@@ -579,7 +593,7 @@ TEST(Dictionary, UnitBracketsAreSkippedForNumbers)
         "f");
     EXPECT_DOUBLE_EQ(d.get<double>("rho"), 2650);
     EXPECT_DOUBLE_EQ(d.get<double>("nu"), 1e-6);
-    EXPECT_EQ(d.get<Vector2>("g"), Vector2(0, -9.81));
+    EXPECT_EQ(d.get<Eigen::Vector2d>("g"), Eigen::Vector2d(0, -9.81));
     EXPECT_EQ(d.get<std::vector<double>>("l"), (std::vector<double>{1, 2}));
     // The units stay in the entry, so they are written back.
     EXPECT_NE(d.toString().find("rho [kg/m^3] 2650;"), std::string::npos);
@@ -616,7 +630,7 @@ TEST(Dictionary, GetOrDefault)
     EXPECT_EQ(d.getOrDefault<int>("a", 7), 2);
     EXPECT_EQ(d.getOrDefault<int>("missing", 7), 7);
     EXPECT_EQ(d.getOrDefault<std::string>("missing", "x"), "x");
-    EXPECT_EQ(d.getOrDefault<Vector2>("missing", Vector2(1, 2)), Vector2(1, 2));
+    EXPECT_EQ(d.getOrDefault<Eigen::Vector2d>("missing", Eigen::Vector2d(1, 2)), Eigen::Vector2d(1, 2));
     // Present but malformed is still an error: a typo must not silently become the default.
     EXPECT_THROW(d.getOrDefault<double>("b", 1.0), InputError);
 }

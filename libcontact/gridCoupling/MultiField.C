@@ -104,7 +104,7 @@ void MultiField::updateGrid(EngineView& e, double tNew, double dt)
                 // there the contact takes the unbalanced force, and a damping force would only
                 // come back as a false contact load.
                 if (e.damping > 0 && !bodies.shared(n)) {
-                    for (int d = 0; d < 2; ++d) {
+                    for (int d = 0; d < PlaneSpace::dim; ++d) {
                         const double v = f.velocity[n][d];
                         F[d] -= e.damping * std::abs(F[d]) * (v > 0 ? 1.0 : (v < 0 ? -1.0 : 0.0));
                     }

@@ -56,7 +56,7 @@ void SingleField::updateGrid(EngineView& e, double tNew, double dt)
         Vector2 F = grid.fInt[n] + grid.fExt[n];
         if (alpha > 0) {
             // eq. 3.3.5: F_damp = -alpha |F_ext + F_int| sign(v_n), per component.
-            for (int d = 0; d < 2; ++d) {
+            for (int d = 0; d < PlaneSpace::dim; ++d) {
                 const double v = grid.velocity[n][d];
                 const double sign = v > 0 ? 1.0 : (v < 0 ? -1.0 : 0.0);
                 F[d] -= alpha * std::abs(F[d]) * sign;

@@ -33,7 +33,7 @@ void WeightedDriver::attach(const RigidBodyInfo& info)
     mass_ = info.mass;
     gravity_ = info.gravity;
     velocity0_ = info.velocity;  // restart-safe: the body's particles carry its velocity
-    for (int d = 0; d < 2; ++d)
+    for (int d = 0; d < PlaneSpace::dim; ++d)
         if (!free_[d]) velocity0_[d] = 0.0;
 }
 
@@ -41,7 +41,7 @@ Vector2 WeightedDriver::freeAcceleration(double t, const Vector2& materialForce,
 {
     Vector2 a = Vector2::Zero();
     const Vector2 added = valueOf(addedForce_, t);
-    for (int d = 0; d < 2; ++d) {
+    for (int d = 0; d < PlaneSpace::dim; ++d) {
         if (!free_[d]) continue;
         double F = mass_ * gravity_[d] + added[d] + materialForce[d];
         if (damping_ > 0.0 && v[d] != 0.0) F -= damping_ * std::abs(F) * (v[d] > 0.0 ? 1.0 : -1.0);  // eq. 3.3.5
@@ -63,7 +63,7 @@ Vector2 WeightedDriver::velocity(double t, const Vector2&) const
     if (!started_) start(t);
     const Vector2 prescribed = valueOf(velocity_, t);
     Vector2 v;
-    for (int d = 0; d < 2; ++d) v[d] = free_[d] ? velocity0_[d] + (t - time_) * acceleration_[d] : prescribed[d];
+    for (int d = 0; d < PlaneSpace::dim; ++d) v[d] = free_[d] ? velocity0_[d] + (t - time_) * acceleration_[d] : prescribed[d];
     return v;
 }
 
@@ -73,7 +73,7 @@ void WeightedDriver::advance(double t, double dt, const RigidBodyLoad& load)
     // The step [t, t + dt] moved the body with v(t + dt); that is the new state.
     velocity0_ += (t + dt - time_) * acceleration_;
     time_ = t + dt;
-    for (int d = 0; d < 2; ++d)
+    for (int d = 0; d < PlaneSpace::dim; ++d)
         if (!free_[d]) velocity0_[d] = 0.0;
     // The material's reaction of that step drives the next one (one step late, see the header).
     acceleration_ = freeAcceleration(time_, load.force, velocity0_);

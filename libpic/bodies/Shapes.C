@@ -83,7 +83,7 @@ public:
         }
         // An axis direction's cosine is not exactly 0: no 6e-18 beyond a grid line.
         const double zero = 1e-12 * outer_;
-        for (int i = 0; i < 2; ++i) {
+        for (int i = 0; i < PlaneSpace::dim; ++i) {
             if (std::abs(lo[i] - centre_[i]) < zero) lo[i] = centre_[i];
             if (std::abs(hi[i] - centre_[i]) < zero) hi[i] = centre_[i];
         }

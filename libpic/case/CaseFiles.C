@@ -25,7 +25,7 @@ std::vector<std::unique_ptr<Material>> readMaterials(const Dictionary& materials
     return materials;
 }
 
-std::array<std::unique_ptr<BoundaryCondition>, 4> readBoundaries(const Dictionary& gridDict)
+std::array<std::unique_ptr<BoundaryCondition>, PlaneSpace::nFaces> readBoundaries(const Dictionary& gridDict)
 {
     const Dictionary& sides = gridDict.subDict("boundaries");
     // The axis of an axisymmetric scene (the left side at r = 0): u_r = 0 there, a mirror.
@@ -33,7 +33,7 @@ std::array<std::unique_ptr<BoundaryCondition>, 4> readBoundaries(const Dictionar
         gridDict.getWordOrDefault("geometry", {"planeStrain", "axisymmetric"}, "planeStrain") == "axisymmetric" &&
         gridDict.get<Vector2>("origin").x() == 0.0;
     const Dictionary axis = Dictionary::parse("type symmetry;", sides.name() + "/left");
-    std::array<std::unique_ptr<BoundaryCondition>, 4> bcs;
+    std::array<std::unique_ptr<BoundaryCondition>, PlaneSpace::nFaces> bcs;
     for (int s = 0; s < 4; ++s) {
         const std::string& side = gridSideNames()[s];
         if (s == static_cast<int>(GridSide::left) && leftIsAxis) {
@@ -53,9 +53,9 @@ std::array<std::unique_ptr<BoundaryCondition>, 4> readBoundaries(const Dictionar
     return bcs;
 }
 
-std::array<bool, 4> mirrorSides(const std::array<std::unique_ptr<BoundaryCondition>, 4>& boundaries)
+std::array<bool, PlaneSpace::nFaces> mirrorSides(const std::array<std::unique_ptr<BoundaryCondition>, PlaneSpace::nFaces>& boundaries)
 {
-    std::array<bool, 4> mirror{};
+    std::array<bool, PlaneSpace::nFaces> mirror{};
     for (std::size_t s = 0; s < 4; ++s) mirror[s] = boundaries[s]->isMirror();
     return mirror;
 }

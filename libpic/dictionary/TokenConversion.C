@@ -97,7 +97,8 @@ struct Reader {
         x = s.begin->text;
         return true;
     }
-    bool read(Span s, Vector2& v)
+    //- A plane vector: (x y), or (x y 0) as a 3D tool may write it.
+    bool read(Span s, Eigen::Vector2d& v)
     {
         std::vector<Span> e;
         double z = 0;
@@ -108,6 +109,12 @@ struct Reader {
             return false;
         }
         return true;
+    }
+    bool read(Span s, Eigen::Vector3d& v)
+    {
+        std::vector<Span> e;
+        return listElements(s, e) && e.size() == 3 && read(e[0], v.x()) && read(e[1], v.y()) &&
+               read(e[2], v.z());
     }
     template <class T> bool read(Span s, std::vector<T>& list)
     {
@@ -162,11 +169,13 @@ std::string convertTokens(const Tokens& t, int& v) { return convert(t, v); }
 std::string convertTokens(const Tokens& t, long& v) { return convert(t, v); }
 std::string convertTokens(const Tokens& t, bool& v) { return convert(t, v); }
 std::string convertTokens(const Tokens& t, std::string& v) { return convert(t, v); }
-std::string convertTokens(const Tokens& t, Vector2& v) { return convert(t, v); }
+std::string convertTokens(const Tokens& t, Eigen::Vector2d& v) { return convert(t, v); }
+std::string convertTokens(const Tokens& t, Eigen::Vector3d& v) { return convert(t, v); }
 std::string convertTokens(const Tokens& t, std::vector<double>& v) { return convert(t, v); }
 std::string convertTokens(const Tokens& t, std::vector<int>& v) { return convert(t, v); }
 std::string convertTokens(const Tokens& t, std::vector<std::string>& v) { return convert(t, v); }
-std::string convertTokens(const Tokens& t, std::vector<Vector2>& v) { return convert(t, v); }
+std::string convertTokens(const Tokens& t, std::vector<Eigen::Vector2d>& v) { return convert(t, v); }
+std::string convertTokens(const Tokens& t, std::vector<Eigen::Vector3d>& v) { return convert(t, v); }
 std::string convertTokens(const Tokens& t, Table& v) { return convert(t, v); }
 
 const char* expectedForm(const double*) { return "a number"; }
@@ -174,11 +183,13 @@ const char* expectedForm(const int*) { return "an integer"; }
 const char* expectedForm(const long*) { return "an integer"; }
 const char* expectedForm(const bool*) { return "a switch (yes/no/on/off/true/false)"; }
 const char* expectedForm(const std::string*) { return "a single word or \"string\""; }
-const char* expectedForm(const Vector2*) { return "a vector (x y)"; }
+const char* expectedForm(const Eigen::Vector2d*) { return "a vector (x y)"; }
+const char* expectedForm(const Eigen::Vector3d*) { return "a vector (x y z)"; }
 const char* expectedForm(const std::vector<double>*) { return "a list of numbers (a b ...)"; }
 const char* expectedForm(const std::vector<int>*) { return "a list of integers (i j ...)"; }
 const char* expectedForm(const std::vector<std::string>*) { return "a list of words (a b ...)"; }
-const char* expectedForm(const std::vector<Vector2>*) { return "a list of vectors ((x y) ...)"; }
+const char* expectedForm(const std::vector<Eigen::Vector2d>*) { return "a list of vectors ((x y) ...)"; }
+const char* expectedForm(const std::vector<Eigen::Vector3d>*) { return "a list of vectors ((x y z) ...)"; }
 const char* expectedForm(const Table*) { return "a table ((x0 y0) (x1 y1) ...)"; }
 // clang-format on
 

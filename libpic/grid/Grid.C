@@ -13,9 +13,9 @@
 
 namespace gpic {
 
-const std::array<std::string, 4>& gridSideNames()
+const std::array<std::string, PlaneSpace::nFaces>& gridSideNames()
 {
-    static const std::array<std::string, 4> names{"left", "right", "bottom", "top"};
+    static const std::array<std::string, PlaneSpace::nFaces> names{"left", "right", "bottom", "top"};
     return names;
 }
 

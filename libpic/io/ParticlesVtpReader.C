@@ -97,7 +97,7 @@ void get(const double* c, double& out) { out = c[0]; }
 void get(const double* c, Vector2& out) { out = Vector2(c[0], c[1]); }
 //- The full 3x3 tensor's (11, 22, 33, 12).
 void get(const double* c, SymTensor& out) { out = SymTensor(c[0], c[4], c[8], c[1]); }
-void get(const double* c, Eigen::Matrix2d& out) { out << c[0], c[1], c[3], c[4]; }
+void get(const double* c, PlaneSpace::Gradient& out) { out << c[0], c[1], c[3], c[4]; }
 
 //- Where the values of one file array go: a table entry, one component of the array into
 //  a double array, or the positions.

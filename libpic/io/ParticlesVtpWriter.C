@@ -73,7 +73,7 @@ void put(const SymTensor& s, double* out, int)
     out[6] = 0.0;   out[7] = 0.0;   out[8] = s[ZZ];
 }
 //- The affine velocity matrix C_p (a velocity gradient, not symmetric) as a 3x3 tensor.
-void put(const Eigen::Matrix2d& C, double* out, int)
+void put(const PlaneSpace::Gradient& C, double* out, int)
 {
     out[0] = C(0, 0); out[1] = C(0, 1); out[2] = 0.0;
     out[3] = C(1, 0); out[4] = C(1, 1); out[5] = 0.0;

@@ -15,7 +15,7 @@ namespace {
 template <class T> T zero() { return T(0); }
 template <> Vector2 zero<Vector2>() { return Vector2::Zero(); }
 template <> SymTensor zero<SymTensor>() { return SymTensor::Zero(); }
-template <> Eigen::Matrix2d zero<Eigen::Matrix2d>() { return Eigen::Matrix2d::Zero(); }
+template <> PlaneSpace::Gradient zero<PlaneSpace::Gradient>() { return PlaneSpace::Gradient::Zero(); }
 
 template <class V> void permute(V& a, const std::vector<std::size_t>& order)
 {

@@ -18,7 +18,7 @@ void AffineVelocity::form(Particles& p, const ShapeWeights& weights, std::size_t
 {
     const int stride = weights.stride;
     const std::size_t k0 = q * stride;
-    Eigen::Matrix2d B = Eigen::Matrix2d::Zero(), D = Eigen::Matrix2d::Zero();
+    PlaneSpace::Gradient B = PlaneSpace::Gradient::Zero(), D = PlaneSpace::Gradient::Zero();
     for (int k = 0; k < stride; ++k) {
         const int n = weights.node[k0 + k];
         if (n < 0) continue;
@@ -29,8 +29,8 @@ void AffineVelocity::form(Particles& p, const ShapeWeights& weights, std::size_t
         if (fromGradient_) B.noalias() += velocity[n] * weights.dN[k0 + k].transpose();
         else B.noalias() += (N * velocity[n]) * r.transpose();  // B_p (Jiang et al. 2015)
     }
-    Eigen::Matrix2d& C = p.affine[q];
-    C = fromGradient_ ? B : Eigen::Matrix2d(B * D.inverse());
+    PlaneSpace::Gradient& C = p.affine[q];
+    C = fromGradient_ ? B : PlaneSpace::Gradient(B * D.inverse());
     p.affineEnergy[q] = 0.5 * p.m[q] * (C * D * C.transpose()).trace();
 }
 

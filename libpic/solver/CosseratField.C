@@ -16,9 +16,9 @@ void CosseratField::allocate(int nNodes)
     fixed.assign(n, 0);
 }
 
-std::array<bool, 4> readRotationSides(const Dictionary& gridDict, const std::array<bool, 4>& mirror)
+std::array<bool, PlaneSpace::nFaces> readRotationSides(const Dictionary& gridDict, const std::array<bool, PlaneSpace::nFaces>& mirror)
 {
-    std::array<bool, 4> fixed{};
+    std::array<bool, PlaneSpace::nFaces> fixed{};
     const Dictionary& sides = gridDict.subDict("boundaries");
     for (int s = 0; s < 4; ++s) {
         const Dictionary& side = sides.subDict(gridSideNames()[s]);

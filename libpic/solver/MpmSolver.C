@@ -384,7 +384,7 @@ void MpmSolver::updateStress(double dt)
         const Vector2* dNw = weights_.dN.data();
         // Velocity gradient L_ab = sum_i v_i,a dN_i/dx_b (B v of eq. 2.4.5, plus spin).
         const auto velocityGradient = [&, node, dNw, stride](std::size_t q) {
-            Eigen::Matrix2d L = Eigen::Matrix2d::Zero();
+            PlaneSpace::Gradient L = PlaneSpace::Gradient::Zero();
             if (driverOf(q)) return L;  // rigid: no strain, no spin, no volume change
             const std::size_t k0 = q * stride;
             // With a contact pass each body deforms with its own velocity field.
@@ -396,7 +396,7 @@ void MpmSolver::updateStress(double dt)
             }
             return L;
         };
-        const auto strainIncrement = [&](std::size_t q, const Eigen::Matrix2d& L) {
+        const auto strainIncrement = [&](std::size_t q, const PlaneSpace::Gradient& L) {
             // Kept as scalars: reading freshly stored components back as a pair stalls on
             // store forwarding (a third of this pass).
             const double dXX = dt * L(0, 0), dYY = dt * L(1, 1), dZZ = 0.0 /* plane strain */,
@@ -426,7 +426,7 @@ void MpmSolver::updateStress(double dt)
             cellMean_->average(p, [&](std::size_t q) { return velocityGradient_[q].trace(); }, cellMeanValue_);
             parallelFor(nParticles, [&](long q) {
                 // The cell's mean dilatation rate in place of the particle's own; shear and spin kept.
-                Eigen::Matrix2d& L = velocityGradient_[q];
+                PlaneSpace::Gradient& L = velocityGradient_[q];
                 L.diagonal().array() += 0.5 * (cellMeanValue_[q] - L.trace());
                 strainIncrement(q, L);
             });
@@ -574,7 +574,7 @@ double MpmSolver::bytesPerParticle() const
     std::size_t passes = 0;
     for (const auto& pass : passes_) passes += pass->particleBytes();
     const std::size_t cellMeans = cellMean_ ? cellMean_->particleBytes() + cellMeanValue_.capacity() * sizeof(double) +
-                                                  velocityGradient_.capacity() * sizeof(Eigen::Matrix2d)
+                                                  velocityGradient_.capacity() * sizeof(PlaneSpace::Gradient)
                                             : 0;
     return double(particles_.bytes() + weights + passes + cellMeans) / double(particles_.size());
 }
