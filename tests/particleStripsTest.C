@@ -3,7 +3,7 @@
 // thread works on one run of neighbouring strips, the runs in thread order along the grid;
 // and the runs share the colour's particles evenly to within one strip's particles.
 #include "core/Threads.H"
-#include "solver/ParticleStrips.H"
+#include "engine/ParticleStrips.H"
 
 #include <gtest/gtest.h>
 

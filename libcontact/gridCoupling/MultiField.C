@@ -1,9 +1,8 @@
 #include "gridCoupling/MultiField.H"
 
 #include "core/Registry.H"
-#include "solver/EnginePass.H"
-
-#include <cmath>
+#include "coupling/LocalDamping.H"
+#include "engine/EnginePass.H"
 
 namespace gpic {
 
@@ -103,12 +102,7 @@ void MultiField::updateGrid(EngineView& e, double tNew, double dt)
                 // eq. 3.3.5 on the body's own field. Not at a node shared with another body:
                 // there the contact takes the unbalanced force, and a damping force would only
                 // come back as a false contact load.
-                if (e.damping > 0 && !bodies.shared(n)) {
-                    for (int d = 0; d < PlaneSpace::dim; ++d) {
-                        const double v = f.velocity[n][d];
-                        F[d] -= e.damping * std::abs(F[d]) * (v > 0 ? 1.0 : (v < 0 ? -1.0 : 0.0));
-                    }
-                }
+                if (e.damping > 0 && !bodies.shared(n)) applyLocalDamping(F, f.velocity[n], e.damping);
                 f.accel[n] = f.mass[n] > e.minNodalMass ? Vector2(F / f.mass[n]) : Vector2::Zero();  // eq. 2.4.2
                 f.velocity[n] += dt * f.accel[n];                                                  // eq. 2.4.3
             });

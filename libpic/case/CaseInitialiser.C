@@ -7,7 +7,6 @@
 #include "io/PvdCollection.H"
 #include "io/TimeDirectories.H"
 #include "case/CaseFiles.H"
-#include "solver/CosseratField.H"
 
 namespace gpic {
 

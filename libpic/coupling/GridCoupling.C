@@ -2,7 +2,7 @@
 
 #include "core/Registry.H"
 #include "core/error.H"
-#include "solver/EnginePass.H"
+#include "engine/EnginePass.H"
 
 namespace gpic {
 
@@ -15,7 +15,7 @@ std::unique_ptr<GridCoupling> GridCoupling::New(CouplingParts& parts)
     auto& table = Registry<GridCoupling>::table();
     const auto it = table.find(type);
     if (it == table.end())
-        throw RunError("grid coupling '" + type + "' is not registered (libcontact is not loaded); registered: " +
+        throw RunError("grid coupling '" + type + "' is not registered (contact needs libcontact); registered: " +
                        Registry<GridCoupling>::validChoices());
     return it->second.factory(parts);
 }

@@ -5,7 +5,7 @@
 #include "dictionary/ExactNumber.H"
 #include "grid/FaceBand.H"
 #include "grid/Grid.H"
-#include "solver/MpmSolver.H"
+#include "engine/MpmSolver.H"
 
 #include <algorithm>
 

@@ -2,7 +2,7 @@
 
 #include "dictionary/Dictionary.H"
 #include "dictionary/ExactNumber.H"
-#include "solver/MpmSolver.H"
+#include "engine/MpmSolver.H"
 
 #include <algorithm>
 #include <cmath>

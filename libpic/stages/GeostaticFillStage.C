@@ -3,7 +3,7 @@
 #include "core/Info.H"
 #include "core/error.H"
 #include "dictionary/Dictionary.H"
-#include "solver/MpmSolver.H"
+#include "engine/MpmSolver.H"
 #include "stages/ParticlePool.H"
 
 #include <algorithm>

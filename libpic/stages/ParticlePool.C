@@ -1,6 +1,6 @@
 #include "stages/ParticlePool.H"
 
-#include "solver/MpmSolver.H"
+#include "engine/MpmSolver.H"
 
 #include <algorithm>
 #include <numeric>

@@ -3,7 +3,7 @@
 #include "bodies/RigidBodyDriver.H"
 #include "dictionary/Dictionary.H"
 #include "grid/Grid.H"
-#include "solver/MpmSolver.H"
+#include "engine/MpmSolver.H"
 #include "stages/ParticlePool.H"
 #include "stages/StageTimeDriver.H"
 

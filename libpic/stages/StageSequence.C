@@ -4,7 +4,7 @@
 #include "core/error.H"
 #include "dictionary/Dictionary.H"
 #include "dictionary/ExactNumber.H"
-#include "solver/MpmSolver.H"
+#include "engine/MpmSolver.H"
 
 #include <cmath>
 #include <cstdio>

@@ -35,7 +35,8 @@ void readAll(const gpic::Dictionary& d, int depth)
         }
         try { (void)d.get<double>(key); } catch (const gpic::InputError& e) { expectOneLine(e); }
         try { (void)d.get<std::string>(key); } catch (const gpic::InputError& e) { expectOneLine(e); }
-        try { (void)d.get<gpic::Vector2>(key); } catch (const gpic::InputError& e) { expectOneLine(e); }
+        try { (void)d.get<Eigen::Vector2d>(key); } catch (const gpic::InputError& e) { expectOneLine(e); }
+        try { (void)d.get<Eigen::Vector3d>(key); } catch (const gpic::InputError& e) { expectOneLine(e); }
         try { (void)d.get<std::vector<double>>(key); } catch (const gpic::InputError& e) { expectOneLine(e); }
         try { (void)d.get<long>(key); } catch (const gpic::InputError& e) { expectOneLine(e); }
     }

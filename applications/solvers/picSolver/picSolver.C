@@ -1,7 +1,7 @@
 // picSolver: explicit MPM/PIC for granular flow (plane strain). Runs a case from its latest
 // (or chosen) time directory to endTime, writing ParaView time directories.
 #include "applicationMain.H"
-#include "solver/Simulation.H"
+#include "run/Simulation.H"
 
 #include <cstdlib>
 

@@ -1,4 +1,4 @@
-#include "solver/PassTimers.H"
+#include "engine/PassTimers.H"
 
 #include <cstdio>
 

@@ -1,6 +1,6 @@
-#include "solver/MpmSolver.H"
+#include "engine/MpmSolver.H"
 
-#include "solver/AxisymmetricHoop.H"
+#include "planar/AxisymmetricHoop.H"
 
 #include "core/Threads.H"
 #include "core/error.H"
@@ -184,7 +184,7 @@ void MpmSolver::setMassScaling(const MassScaling& scaling)
     for (const auto& m : materials_) {
         const double c = m->waveSpeed();
         double stable = c > 0 ? h / c : 1e300;
-        if (m->needsRotation()) stable = std::min(stable, m->rotationalTimeStep(h));
+        if (m->needsRotation()) stable = std::min(stable, m->polar()->rotationalTimeStep(h));
         massScale_.push_back(scaling.scaleFor(stable));
     }
 }

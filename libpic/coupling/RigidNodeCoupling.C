@@ -1,4 +1,4 @@
-#include "gridCoupling/RigidNodeCoupling.H"
+#include "coupling/RigidNodeCoupling.H"
 
 namespace gpic {
 

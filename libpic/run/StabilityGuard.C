@@ -1,8 +1,8 @@
-#include "solver/StabilityGuard.H"
+#include "run/StabilityGuard.H"
 
 #include "dictionary/Dictionary.H"
 #include "io/ParticlesVtk.H"
-#include "solver/MpmSolver.H"
+#include "engine/MpmSolver.H"
 
 #include <algorithm>
 #include <chrono>

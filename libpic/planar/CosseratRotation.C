@@ -1,4 +1,4 @@
-#include "solver/CosseratRotation.H"
+#include "planar/CosseratRotation.H"
 
 #include "core/Threads.H"
 
@@ -14,7 +14,7 @@ CosseratRotation::CosseratRotation(const std::vector<std::unique_ptr<Material>>&
     r_.materialJ.assign(materials.size(), 0.0);
     for (std::size_t m = 0; m < materials.size(); ++m) {
         r_.materialPolar[m] = materials[m]->needsRotation();
-        r_.materialJ[m] = r_.materialPolar[m] ? materials[m]->rotationalInertia() : 0.0;
+        r_.materialJ[m] = r_.materialPolar[m] ? materials[m]->polar()->rotationalInertia() : 0.0;
     }
     for (int s = 0; s < GridSides::count; ++s)  // w3c is odd under a reflection: zero on a symmetry plane
         r_.sideFixed[s] = sides.condition(static_cast<GridSide>(s)).isMirror();
@@ -65,7 +65,7 @@ void CosseratRotation::setUpParticles(Particles& p)
 double CosseratRotation::timeStep(const Material& material, double minCellSize, double massScale)
 {
     if (!material.needsRotation()) return 1e300;
-    const double step = material.rotationalTimeStep(minCellSize);
+    const double step = material.polar()->rotationalTimeStep(minCellSize);
     return massScale == 1.0 ? step : step * std::sqrt(massScale);
 }
 

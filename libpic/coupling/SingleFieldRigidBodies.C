@@ -1,7 +1,7 @@
-#include "gridCoupling/SingleFieldRigidBodies.H"
+#include "coupling/SingleFieldRigidBodies.H"
 
 #include "core/Registry.H"
-#include "solver/EnginePass.H"
+#include "engine/EnginePass.H"
 
 namespace gpic {
 

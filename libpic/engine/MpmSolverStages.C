@@ -1,7 +1,7 @@
 // What a run in stages changes in the engine between two steps: the set of particles (layers
 // filled or dug away, bodies woken or put to sleep) and the openings of the sides (gates);
 // and the grid of a state written between steps.
-#include "solver/MpmSolver.H"
+#include "engine/MpmSolver.H"
 
 #include "core/error.H"
 

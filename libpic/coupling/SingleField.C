@@ -1,9 +1,9 @@
-#include "gridCoupling/SingleField.H"
+#include "coupling/SingleField.H"
 
 #include "core/Registry.H"
-#include "solver/EnginePass.H"
+#include "coupling/LocalDamping.H"
+#include "engine/EnginePass.H"
 
-#include <cmath>
 
 namespace gpic {
 
@@ -54,14 +54,7 @@ void SingleField::updateGrid(EngineView& e, double tNew, double dt)
     const double alpha = e.damping;
     grid.forEachActiveNode([&](int n) {
         Vector2 F = grid.fInt[n] + grid.fExt[n];
-        if (alpha > 0) {
-            // eq. 3.3.5: F_damp = -alpha |F_ext + F_int| sign(v_n), per component.
-            for (int d = 0; d < PlaneSpace::dim; ++d) {
-                const double v = grid.velocity[n][d];
-                const double sign = v > 0 ? 1.0 : (v < 0 ? -1.0 : 0.0);
-                F[d] -= alpha * std::abs(F[d]) * sign;
-            }
-        }
+        if (alpha > 0) applyLocalDamping(F, grid.velocity[n], alpha);  // of F_ext + F_int
         // Nodes far lighter than any particle (a particle just touching the cell) would
         // get a huge F/m: USL then feeds it into the strain (the small-mass instability).
         grid.accel[n] = grid.mass[n] > e.minNodalMass ? Vector2(F / grid.mass[n]) : Vector2::Zero();  // eq. 2.4.2

@@ -1,4 +1,4 @@
-#include "solver/AxisymmetricHoop.H"
+#include "planar/AxisymmetricHoop.H"
 
 #include "core/Threads.H"
 

@@ -1,4 +1,4 @@
-#include "solver/Simulation.H"
+#include "run/Simulation.H"
 
 #include "case/CaseFiles.H"
 #include "core/Info.H"

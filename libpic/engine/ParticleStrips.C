@@ -1,4 +1,4 @@
-#include "solver/ParticleStrips.H"
+#include "engine/ParticleStrips.H"
 
 #include "core/Threads.H"
 
