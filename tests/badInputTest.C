@@ -184,6 +184,17 @@ TEST_F(BadInput, aFlipFractionOutsideZeroToOneNamesTheRange)
     expectRejected("picSolver", badInput, {"system/mpmSchemes:", "flipFraction", "0 <= flipFraction <= 1"});
 }
 
+// The stability guard's settings are read once, with the case: a bad one stops picSolver
+// before any step, at its line.
+TEST_F(BadInput, aStabilityGuardSettingOutOfRangeNamesTheRequirement)
+{
+    startGood();
+    std::ofstream(controlDict(), std::ios::app) << "stabilityGuard { snapshotInterval 0; }\n";
+    expectRejected("picSolver", badInput, {"system/controlDict:", "snapshotInterval", "snapshotInterval >= 1"});
+    replaceText(controlDict(), "snapshotInterval 0;", "maxEnergyGain -1;");
+    expectRejected("picSolver", badInput, {"system/controlDict:", "maxEnergyGain", "maxEnergyGain > 0"});
+}
+
 // Not bad input: a cell size written to ten digits (1/75 m as 0.0133333333) makes the grid
 // 2.5e-9 m short of the disk that touches its side; that rounding is accepted.
 TEST_F(BadInput, aGridShortOfABodyByRoundingIsAccepted)

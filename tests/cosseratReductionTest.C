@@ -3,6 +3,7 @@
 // the motion and stress of linearElastic (E = 2G(1 + nu)) to round-off; with small Gc and l
 // the difference is small (seed 2.6, A11; de Borst 1991). A nonpolar scene holds no rotation
 // array at all (its bytes per particle do not grow).
+#include "planar/CosseratRotation.H"
 #include "support/CaseRunner.H"
 
 #include <algorithm>
@@ -38,7 +39,7 @@ RunResult run(const std::string& material)
     const fs::path dir = scratch.path() / "case";
     footingCase(dir, material);
     auto simulation = runAndKeep(dir);
-    return {simulation->solver().particles(), simulation->solver().hasRotation(),
+    return {simulation->solver().particles(), simulation->solver().find<CosseratRotation>() != nullptr,
             simulation->solver().bytesPerParticle()};
 }
 

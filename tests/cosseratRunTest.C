@@ -6,6 +6,7 @@
 #include "core/Threads.H"
 #include "io/ParticlesVtk.H"
 #include "io/TimeDirectories.H"
+#include "planar/CosseratRotation.H"
 #include "support/CaseRunner.H"
 #include "support/ThreadRuns.H"
 
@@ -116,9 +117,9 @@ TEST(CosseratRun, aPolarMaterialNoBodyUsesAddsNoRotationField)
     replaceText(listedOnly / "constant/bodies", "material sand;", "material soil;");
     const auto used = initialisedSimulation(polar);
     const auto unused = initialisedSimulation(listedOnly);
-    EXPECT_TRUE(used->solver().hasRotation());
+    EXPECT_TRUE(used->solver().find<CosseratRotation>() != nullptr);
     EXPECT_TRUE(used->solver().particles().carries(FieldGroup::polar));
-    EXPECT_FALSE(unused->solver().hasRotation());
+    EXPECT_FALSE(unused->solver().find<CosseratRotation>() != nullptr);
     EXPECT_FALSE(unused->solver().particles().carries(FieldGroup::polar));
     // Without the rotation the step is the translational one (E = 2 G (1 + nu) as sand's G).
     EXPECT_GT(unused->solver().criticalTimeStep(), used->solver().criticalTimeStep());
@@ -143,7 +144,7 @@ TEST(CosseratRun, aStagesDriverSetsTheRotationConditionAtItsRigidBody)
             << "  hold { type run; drivers { plate { type fixed; " + stageRotation + " } } until { duration 1e-4; } }\n}\n";
         const auto simulation = runAndKeep(dir);
         EXPECT_EQ(simulation->stages()->records().size(), 2u);
-        const auto& fixed = simulation->solver().rotationField().rigidFixed;
+        const auto& fixed = simulation->solver().find<CosseratRotation>()->field().rigidFixed;
         EXPECT_EQ(fixed.size(), 2u);
         return fixed.size() == 2 && fixed[1] != 0;
     };

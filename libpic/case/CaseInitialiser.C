@@ -1,12 +1,12 @@
 #include "case/CaseInitialiser.H"
 
 #include "bodies/BodyFiller.H"
+#include "case/CaseFiles.H"
 #include "core/error.H"
 #include "core/Plugins.H"
 #include "io/ParticlesVtk.H"
 #include "io/PvdCollection.H"
 #include "io/TimeDirectories.H"
-#include "case/CaseFiles.H"
 
 namespace gpic {
 

@@ -6,6 +6,7 @@
 #include "core/error.H"
 #include "io/ParticlesVtk.H"
 #include "io/TimeDirectories.H"
+#include "planar/CosseratRotation.H"
 
 #include <filesystem>
 #include <sstream>
@@ -74,6 +75,7 @@ std::unique_ptr<Case> readCase(const RunOptions& options)
 
     Dictionary& controlDict = c.controlDict;
     c.timeControl = std::make_unique<TimeControl>(controlDict);
+    c.stability = StabilitySettings::read(controlDict, *c.timeControl);
     if (controlDict.found("stages") && controlDict.found("damping"))
         controlDict.fail("damping", "a run in stages sets the damping per stage: move `damping` into the stages");
     const auto damping = controlDict.getOrDefault<double>("damping", 0.0);
@@ -136,8 +138,8 @@ std::unique_ptr<Case> readCase(const RunOptions& options)
         readParticles(dormantFile.string(), dormant, t, &stored);
         remapMaterials(dormant, stored, materials, startName + "/dormant.vtp");
     }
-    in.carryRotation = MpmSolver::needsRotation(dormant, in.materials);
-    const bool polar = in.carryRotation || MpmSolver::needsRotation(in.particles, in.materials);
+    in.carryRotation = CosseratRotation::polarScene(dormant, in.materials);
+    const bool polar = in.carryRotation || CosseratRotation::polarScene(in.particles, in.materials);
     if (polar && in.grid.axisymmetric())
         for (const auto& m : in.materials)
             if (m->needsRotation())
@@ -216,6 +218,8 @@ std::unique_ptr<Case> readCase(const RunOptions& options)
     std::ostringstream why;
     why << "cell size " << solver.stepLength() << " m / (wave speed " << solver.maxWaveSpeed()
         << " m/s + particle speed " << solver.maxParticleSpeed() << " m/s)";
+    if (solver.passTimeStep() < 1e300)
+        why << ", or the " << solver.passTimeStepName() << "'s step " << solver.passTimeStep() << " s";
     c.timeControl->checkStable(solver.criticalTimeStep(), why.str());
     return run;
 }

@@ -1,9 +1,11 @@
 #include "engine/MpmSolver.H"
 
-#include "planar/AxisymmetricHoop.H"
+#include "loads/AppliedLoads.H"
+#include "schemes/AffineVelocity.H"
+#include "schemes/XpicFilter.H"
 
-#include "core/Threads.H"
 #include "core/error.H"
+#include "core/Threads.H"
 
 #include <algorithm>
 #include <cmath>
@@ -29,16 +31,6 @@ void MpmSolver::useTransfer(std::unique_ptr<ParticleTransfer> transfer)
 {
     transfer_ = std::move(transfer);
     matchAffine();
-    if (transfer_->affine()) {
-        auto affine = std::make_unique<AffineVelocity>(grid_, *shape_);
-        affine_ = affine.get();
-        addPass(std::move(affine));
-    }
-    if (transfer_->filterOrder() >= 1) {
-        auto filter = std::make_unique<XpicFilter>(transfer_->filterOrder());
-        filter_ = filter.get();
-        addPass(std::move(filter));
-    }
 }
 
 void MpmSolver::matchAffine()
@@ -47,22 +39,12 @@ void MpmSolver::matchAffine()
     else particles_.drop(FieldGroup::affine);
 }
 
-bool MpmSolver::needsRotation(const Particles& particles, const std::vector<std::unique_ptr<Material>>& materials)
-{
-    // A polar material that constant/materials lists but no body uses costs nothing.
-    for (int m : particles.material)
-        if (m >= 0 && m < static_cast<int>(materials.size()) && materials[m]->needsRotation()) return true;
-    return false;
-}
-
 MpmSolver::MpmSolver(SolverInputs in)
     : grid_(std::move(in.grid)), particles_(std::move(in.particles)), materials_(std::move(in.materials)),
       shape_(std::move(in.shape)), sides_(std::move(in.boundaries), grid_), strips_(grid_),
       transfer_(std::make_unique<FlipTransfer>(Dictionary::parse("transfer FLIP;", "the seed's FLIP")))
 {
-    if (needsRotation(particles_, materials_)) addRotation();  // polar scenes only
     setUpParticles();
-    if (in.carryRotation) enableRotation();
     // The order matters: the rigid bodies' mass properties take gravity, the contact pass's
     // arrays the rigid bodies.
     gravity_ = in.gravity;
@@ -75,16 +57,14 @@ MpmSolver::MpmSolver(SolverInputs in)
     if (in.cellMeanDilatation && !in.grid.axisymmetric()) cellMean_ = std::make_unique<CellMeanDilatation>();
     time_ = in.time;
     removedMass_ = in.removedMass;
-    if (rotation_ && in.rotationSides) rotation_->setSideFixed(*in.rotationSides);
-    if (rotation_ && !in.rigidRotation.empty()) rotation_->setRigidFixed(std::move(in.rigidRotation));
     if (!in.rigidBodies.empty()) attachRigidBodies(std::move(in.rigidBodies));
     coupleGrid(std::move(in.contact));
-    if (grid_.axisymmetric()) addPass(std::make_unique<AxisymmetricHoop>(in.cellMeanDilatation));
-    if (!in.loads.empty()) {  // after the particles took their final order
-        auto loads = std::make_unique<AppliedLoads>(std::move(in.loads), particles_, grid_, in.bodyNames);
-        loads_ = loads.get();
-        addPass(std::move(loads));
-    }
+    // The passes last: the loads select particles in their final order.
+    PassScene scene{grid_, particles_, materials_, sides_, *shape_, *transfer_, in};
+    for (auto& pass : assemblePasses(scene)) addPass(std::move(pass));
+    affine_ = find<AffineVelocity>();
+    filter_ = find<XpicFilter>();
+    setUpPassParticles();
 }
 
 void MpmSolver::coupleGrid(std::unique_ptr<ContactPass> contact)
@@ -108,20 +88,6 @@ EngineView MpmSolver::view()
     return EngineView{grid_,    particles_, weights_, strips_,       sides_,      rigid_,          *coupling_,
                       *transfer_, gravity_,  time_,    damping_,      minNodalMass_, massScale_, affineCentres(),
                       timers_};
-}
-
-void MpmSolver::enableRotation()
-{
-    if (rotation_) return;
-    addRotation();
-    rotation_->setUpParticles(particles_);
-}
-
-void MpmSolver::addRotation()
-{
-    auto pass = std::make_unique<CosseratRotation>(materials_, sides_, grid_.nNodes());
-    rotation_ = pass.get();
-    addPass(std::move(pass));
 }
 
 void MpmSolver::addPass(std::unique_ptr<EnginePass> pass)
@@ -150,29 +116,29 @@ void MpmSolver::reach(StepPoint point, double dt)
     hooks_.call(point, *this);
 }
 
-void MpmSolver::setRigidRotation(std::vector<char> fixed)
-{
-    if (rotation_) rotation_->setRigidFixed(std::move(fixed));
-}
-
-const CosseratField& MpmSolver::rotationField() const
-{
-    static const CosseratField none;
-    return rotation_ ? rotation_->field() : none;
-}
-
-double MpmSolver::rotationalTimeStep() const
+double MpmSolver::passTimeStep() const
 {
     double dt = 1e300;
     for (std::size_t m = 0; m < materials_.size(); ++m)
-        if (materialDeforms_[m]) dt = std::min(dt, rotationalTimeStep(m));
+        if (materialDeforms_[m]) dt = std::min(dt, passTimeStep(m));
     return dt;
 }
 
-double MpmSolver::rotationalTimeStep(std::size_t m) const
+double MpmSolver::passTimeStep(std::size_t m) const
 {
-    if (!rotation_) return 1e300;
-    return CosseratRotation::timeStep(*materials_[m], grid_.minCellSize(), massScale_.empty() ? 1.0 : massScale_[m]);
+    double dt = 1e300;
+    for (const auto& pass : passes_)
+        dt = std::min(dt, pass->maxDeltaT(m, grid_.minCellSize(), massScale_.empty() ? 1.0 : massScale_[m]));
+    return dt;
+}
+
+bool MpmSolver::hasLoads() const { return find<AppliedLoads>() != nullptr; }
+
+std::string MpmSolver::passTimeStepName() const
+{
+    for (const auto& pass : passes_)
+        if (!pass->stepLimitName().empty()) return pass->stepLimitName();
+    return "";
 }
 
 void MpmSolver::setMassScaling(const MassScaling& scaling)
@@ -211,9 +177,17 @@ void MpmSolver::setUpParticles()
     double lightest = 0;
     for (double m : particles_.m) lightest = lightest == 0 ? m : std::min(lightest, m);
     minNodalMass_ = 1e-9 * lightest;
+}
+
+void MpmSolver::setUpPassParticles()
+{
+    bool polar = false;
+    for (auto& pass : passes_) {
+        pass->setUpParticles(particles_);
+        polar = polar || pass->particleGroup() == FieldGroup::polar;
+    }
     // A nonpolar scene drops any rotation arrays read.
-    if (rotation_) rotation_->setUpParticles(particles_);
-    else particles_.drop(FieldGroup::polar);
+    if (!polar) particles_.drop(FieldGroup::polar);
 }
 
 void MpmSolver::reindex()
@@ -549,7 +523,7 @@ double MpmSolver::stepLength() const
 double MpmSolver::criticalTimeStep() const
 {
     const double dt = stepLength() / (maxWaveSpeed() + maxParticleSpeed());
-    return rotation_ ? std::min(dt, rotationalTimeStep()) : dt;
+    return std::min(dt, passTimeStep());
 }
 
 double MpmSolver::maxWaveSpeed() const

@@ -17,6 +17,7 @@ void MpmSolver::replaceParticles(Particles particles)
     particles_ = std::move(particles);
     matchAffine();
     setUpParticles();  // as the constructor: a restart of this state steps bitwise alike
+    setUpPassParticles();
 }
 
 void MpmSolver::projectToGrid()

@@ -3,9 +3,9 @@
 #include "core/error.H"
 #include "dictionary/Dictionary.H"
 #include "dictionary/ExactNumber.H"
+#include "engine/MpmSolver.H"
 #include "grid/FaceBand.H"
 #include "grid/Grid.H"
-#include "engine/MpmSolver.H"
 
 #include <algorithm>
 

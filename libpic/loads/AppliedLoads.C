@@ -1,6 +1,17 @@
 #include "loads/AppliedLoads.H"
 
+#include "engine/SolverInputs.H"
+
 namespace gpic {
+
+GPIC_REGISTER_PASS(AppliedLoads, "appliedLoads")
+
+bool AppliedLoads::needed(const PassScene& scene) { return !scene.inputs.loads.empty(); }
+
+AppliedLoads::AppliedLoads(PassScene& scene)
+    : AppliedLoads(std::move(scene.inputs.loads), scene.particles, scene.grid, scene.inputs.bodyNames)
+{
+}
 
 AppliedLoads::AppliedLoads(std::vector<std::unique_ptr<ParticleLoad>> loads, const Particles& particles,
                            const Grid& grid, const std::vector<std::string>& bodyNames)

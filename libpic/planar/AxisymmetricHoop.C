@@ -1,8 +1,13 @@
 #include "planar/AxisymmetricHoop.H"
 
 #include "core/Threads.H"
+#include "engine/SolverInputs.H"
 
 namespace gpic {
+
+GPIC_REGISTER_PASS(AxisymmetricHoop, "axisymmetricHoop")
+
+AxisymmetricHoop::AxisymmetricHoop(PassScene& scene) : AxisymmetricHoop(scene.inputs.cellMeanDilatation) {}
 
 namespace {
 

@@ -1,11 +1,34 @@
 #include "planar/CosseratRotation.H"
 
 #include "core/Threads.H"
+#include "engine/SolverInputs.H"
 
 #include <algorithm>
 #include <cmath>
 
 namespace gpic {
+
+GPIC_REGISTER_PASS(CosseratRotation, "cosseratRotation")
+
+bool CosseratRotation::polarScene(const Particles& particles, const std::vector<std::unique_ptr<Material>>& materials)
+{
+    // A polar material that constant/materials lists but no body uses costs nothing.
+    for (int m : particles.material)
+        if (m >= 0 && m < static_cast<int>(materials.size()) && materials[m]->needsRotation()) return true;
+    return false;
+}
+
+bool CosseratRotation::needed(const PassScene& scene)
+{
+    return polarScene(scene.particles, scene.materials) || scene.inputs.carryRotation;
+}
+
+CosseratRotation::CosseratRotation(PassScene& scene)
+    : CosseratRotation(scene.materials, scene.sides, scene.grid.nNodes())
+{
+    if (scene.inputs.rotationSides) setSideFixed(*scene.inputs.rotationSides);
+    if (!scene.inputs.rigidRotation.empty()) setRigidFixed(std::move(scene.inputs.rigidRotation));
+}
 
 CosseratRotation::CosseratRotation(const std::vector<std::unique_ptr<Material>>& materials,
                                    const GridSides& sides, int nNodes)
@@ -13,8 +36,9 @@ CosseratRotation::CosseratRotation(const std::vector<std::unique_ptr<Material>>&
     r_.materialPolar.assign(materials.size(), 0);
     r_.materialJ.assign(materials.size(), 0.0);
     for (std::size_t m = 0; m < materials.size(); ++m) {
-        r_.materialPolar[m] = materials[m]->needsRotation();
-        r_.materialJ[m] = r_.materialPolar[m] ? materials[m]->polar()->rotationalInertia() : 0.0;
+        polar_.push_back(materials[m]->polar());
+        r_.materialPolar[m] = polar_[m] != nullptr;
+        r_.materialJ[m] = r_.materialPolar[m] ? polar_[m]->rotationalInertia() : 0.0;
     }
     for (int s = 0; s < GridSides::count; ++s)  // w3c is odd under a reflection: zero on a symmetry plane
         r_.sideFixed[s] = sides.condition(static_cast<GridSide>(s)).isMirror();
@@ -62,10 +86,10 @@ void CosseratRotation::setUpParticles(Particles& p)
     r_.minInertia = 1e-9 * lightest;
 }
 
-double CosseratRotation::timeStep(const Material& material, double minCellSize, double massScale)
+double CosseratRotation::maxDeltaT(std::size_t m, double h, double massScale) const
 {
-    if (!material.needsRotation()) return 1e300;
-    const double step = material.polar()->rotationalTimeStep(minCellSize);
+    if (!polar_[m]) return 1e300;
+    const double step = polar_[m]->rotationalTimeStep(h);
     return massScale == 1.0 ? step : step * std::sqrt(massScale);
 }
 

@@ -1,10 +1,10 @@
 #include "run/Simulation.H"
 
 #include "case/CaseFiles.H"
+#include "core/error.H"
 #include "core/Info.H"
 #include "core/StopSignals.H"
 #include "core/Threads.H"
-#include "core/error.H"
 #include "dictionary/ExactNumber.H"
 #include "io/GridVtk.H"
 #include "io/ParticlesVtk.H"
@@ -47,11 +47,11 @@ double peakMemoryMiB()
 
 } // namespace
 
-Simulation::Simulation(const RunOptions& options)
-    : options_(options), case_(readCase(options)), solver_(*case_->solver), time_(case_->time), step_(case_->step),
+Simulation::Simulation(const RunOptions& options, std::unique_ptr<Case> c)
+    : options_(options), case_(std::move(c)), solver_(*case_->solver), time_(case_->time), step_(case_->step),
       timeDigits_(case_->timeControl->timePrecision())
 {
-    guard_ = std::make_unique<StabilityGuard>(case_->controlDict, solver_, case_->context.bodyNames, case_->gravity,
+    guard_ = std::make_unique<StabilityGuard>(case_->stability, solver_, case_->context.bodyNames, case_->gravity,
                                               case_->hasLoads, snapshotFile());
     onDisk_ = {time_, step_, case_->context.startTimeName};
     if (options_.tuneThreads && threadCount() > 1) tuner_ = std::make_unique<ThreadTuner>(threadCount());
@@ -80,7 +80,7 @@ std::ostream& Simulation::log() const { return info(); }
 void Simulation::restartGuard()
 {
     auto before = std::move(guard_);
-    guard_ = std::make_unique<StabilityGuard>(case_->controlDict, solver_, case_->context.bodyNames,
+    guard_ = std::make_unique<StabilityGuard>(case_->stability, solver_, case_->context.bodyNames,
                                               case_->stages->gravity(), case_->hasLoads, snapshotFile());
     guard_->start(time_, step_);
     if (before) guard_->continueStatistics(*before);

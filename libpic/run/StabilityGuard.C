@@ -1,8 +1,7 @@
 #include "run/StabilityGuard.H"
 
-#include "dictionary/Dictionary.H"
-#include "io/ParticlesVtk.H"
 #include "engine/MpmSolver.H"
+#include "io/ParticlesVtk.H"
 
 #include <algorithm>
 #include <chrono>
@@ -26,28 +25,14 @@ bool finite(const Vector2& v) { return std::isfinite(v.x()) && std::isfinite(v.y
 constexpr long long parallelFrom = 20000;
 } // namespace
 
-StabilityGuard::StabilityGuard(const Dictionary& controlDict, const MpmSolver& solver,
+StabilityGuard::StabilityGuard(const StabilitySettings& settings, const MpmSolver& solver,
                                std::vector<std::string> bodyNames, const Vector2& gravity, bool hasLoads,
                                std::string snapshotFile)
     : solver_(solver), bodyNames_(std::move(bodyNames)), gravity_(gravity), hasLoads_(hasLoads),
+      snapshotInterval_(settings.snapshotInterval), maxEnergyGain_(settings.maxEnergyGain),
+      adjustTimeStep_(settings.adjustTimeStep), courant_(settings.courant), fixedDeltaT_(settings.fixedDeltaT),
       snapshotFile_(std::move(snapshotFile))
 {
-    Dictionary none;
-    const Dictionary* found = controlDict.subDictPtr("stabilityGuard");
-    const Dictionary& d = found ? *found : none;
-    snapshotInterval_ = d.found("snapshotInterval")
-                            ? d.getChecked<long>("snapshotInterval", [](const long& n) { return n >= 1; },
-                                                 "snapshotInterval >= 1")
-                            : 1000;
-    maxEnergyGain_ = d.found("maxEnergyGain")
-                         ? d.getChecked<double>("maxEnergyGain", [](const double& g) { return g > 0; },
-                                                "maxEnergyGain > 0")
-                         : 1.0;
-    // TimeControl has checked these; the guard needs them for the needed step.
-    adjustTimeStep_ = controlDict.getOrDefault<bool>("adjustTimeStep", false);
-    courant_ = adjustTimeStep_ ? controlDict.getOrDefault<double>("maxCourant", 0.5) : 1.0;
-    fixedDeltaT_ = controlDict.get<double>("deltaT");
-
     int bodies = static_cast<int>(bodyNames_.size());
     for (int b : solver_.particles().body) bodies = std::max(bodies, b + 1);
     rigid_.assign(static_cast<std::size_t>(bodies), 0);
@@ -318,7 +303,7 @@ double StabilityGuard::neededStep(std::size_t q, const Vector2& v) const
 
 double StabilityGuard::rotationStep(std::size_t q) const
 {
-    return isRigid(q) ? 1e300 : solver_.rotationalTimeStep(static_cast<std::size_t>(solver_.particles().material[q]));
+    return isRigid(q) ? 1e300 : solver_.passTimeStep(static_cast<std::size_t>(solver_.particles().material[q]));
 }
 
 std::string StabilityGuard::describe(const std::string& what, std::size_t q, double t, long step, double dt) const
@@ -349,7 +334,8 @@ std::string StabilityGuard::describe(const std::string& what, std::size_t q, dou
     if (rotation < 1e300) os << "the smaller of ";
     os << "Courant " << courant_ << " x cell " << solver_.stepLength() << " m / (wave speed " << c << " + speed "
        << v.norm() << ") m/s";
-    if (rotation < 1e300) os << " and the micro-rotation's Courant " << courant_ << " x " << rotation << " s";
+    if (rotation < 1e300)
+        os << " and the " << solver_.passTimeStepName() << "'s Courant " << courant_ << " x " << rotation << " s";
     os << "), the step was " << dt << " s";
     return os.str();
 }

@@ -6,6 +6,8 @@
 
 namespace gpic {
 
+GPIC_REGISTER_PASS(AffineVelocity, "affineVelocity")
+
 AffineVelocity::AffineVelocity(const Grid& grid, const ShapeFunction& shape)
     : fromGradient_(shape.affineFromGradient())
 {

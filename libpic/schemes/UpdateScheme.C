@@ -6,7 +6,7 @@ GPIC_REGISTER(UpdateScheme, USL, "USL")
 GPIC_REGISTER(UpdateScheme, USF, "USF")
 GPIC_REGISTER(UpdateScheme, MUSL, "MUSL")
 
-void USL::advance(MpmSolver& s, double dt) const
+void USL::advance(Engine& s, double dt) const
 {
     s.computeWeights();      // initialisation phase (2.4.1)
     s.particlesToGrid();
@@ -16,7 +16,7 @@ void USL::advance(MpmSolver& s, double dt) const
     s.gridToParticles(dt);   // convective phase: the grid is simply reset next step
 }
 
-void USF::advance(MpmSolver& s, double dt) const
+void USF::advance(Engine& s, double dt) const
 {
     s.computeWeights();
     s.particlesToGrid();
@@ -26,7 +26,7 @@ void USF::advance(MpmSolver& s, double dt) const
     s.gridToParticles(dt);
 }
 
-void MUSL::advance(MpmSolver& s, double dt) const
+void MUSL::advance(Engine& s, double dt) const
 {
     s.computeWeights();
     s.particlesToGrid();

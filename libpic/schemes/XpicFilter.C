@@ -2,6 +2,8 @@
 
 namespace gpic {
 
+GPIC_REGISTER_PASS(XpicFilter, "xpicFilter")
+
 void XpicFilter::at(StepPoint, EngineView& e, double dt)
 {
     auto timer = e.timers.time("transferFilter");

@@ -1,7 +1,7 @@
 #include "stages/GeostaticFillStage.H"
 
-#include "core/Info.H"
 #include "core/error.H"
+#include "core/Info.H"
 #include "dictionary/Dictionary.H"
 #include "engine/MpmSolver.H"
 #include "stages/ParticlePool.H"

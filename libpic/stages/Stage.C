@@ -2,8 +2,9 @@
 
 #include "bodies/RigidBodyDriver.H"
 #include "dictionary/Dictionary.H"
-#include "grid/Grid.H"
 #include "engine/MpmSolver.H"
+#include "grid/Grid.H"
+#include "planar/CosseratRotation.H"
 #include "stages/ParticlePool.H"
 #include "stages/StageTimeDriver.H"
 
@@ -126,7 +127,7 @@ void Stage::configure(MpmSolver& solver, double t0)
     for (std::size_t b = 0; b < drivers_.size(); ++b)
         if (drivers_[b]) drivers[b] = std::make_unique<StageTimeDriver>(std::move(drivers_[b]), t0);
     solver.setRigidBodies(std::move(drivers));
-    if (solver.hasRotation()) solver.setRigidRotation(rotationFixed_);
+    if (auto* rotation = solver.find<CosseratRotation>()) rotation->setRigidFixed(rotationFixed_);
 }
 
 StageEvent Stage::begin(MpmSolver& solver, ParticlePool& pool, double t, long step)

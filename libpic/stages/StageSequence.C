@@ -1,7 +1,7 @@
 #include "stages/StageSequence.H"
 
-#include "core/Info.H"
 #include "core/error.H"
+#include "core/Info.H"
 #include "dictionary/Dictionary.H"
 #include "dictionary/ExactNumber.H"
 #include "engine/MpmSolver.H"

@@ -20,7 +20,7 @@ int main(int argc, char** argv)
             run.quiet = vm.count("quiet") > 0;
             // OMP_NUM_THREADS fixes the count; without it the run measures which count is faster.
             run.tuneThreads = std::getenv("OMP_NUM_THREADS") == nullptr;
-            gpic::Simulation simulation(run);
+            gpic::Simulation simulation(run, gpic::readCase(run));
             simulation.run();
         });
 }
