@@ -9,7 +9,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <numeric>
 #include <sstream>
 
@@ -504,20 +503,12 @@ double MpmSolver::maxParticleSpeed() const
 
 double MpmSolver::stepLength() const
 {
-    if (!grid_.axisymmetric()) return grid_.minCellSize();
-    // The hoop term stiffens the radial motion of a node at radius r_i by about a quarter of
-    // (h / r_i)^2 of its in-plane stiffness (lumped mass, 2 x 2 particles a cell: 0.19 at the
-    // first node off the axis): the step shrinks by the root of 1 + (h / r_i)^2 / 4 at the
-    // innermost node a deforming particle moves (not the axis, where u_r = 0).
-    const double hr = grid_.cellSize().x(), r0 = grid_.origin().x();
-    double rNode = std::numeric_limits<double>::infinity();
-    for (std::size_t q = 0; q < particles_.size(); ++q) {
-        if (driverOf(q) || !materialDeforms_[static_cast<std::size_t>(particles_.material[q])]) continue;
-        const double r = r0 + std::floor((particles_.x[q].x() - r0) / hr) * hr;
-        rNode = std::min(rNode, r > 0.5 * hr ? r : r + hr);
-    }
-    if (!std::isfinite(rNode)) return grid_.minCellSize();
-    return grid_.minCellSize() / std::sqrt(1.0 + 0.25 * (hr / rNode) * (hr / rNode));
+    double length = grid_.minCellSize();
+    const auto deforms = [this](std::size_t q) {
+        return !driverOf(q) && materialDeforms_[static_cast<std::size_t>(particles_.material[q])];
+    };
+    for (const auto& pass : passes_) length = std::min(length, pass->stepLength(grid_, particles_, deforms));
+    return length;
 }
 
 double MpmSolver::criticalTimeStep() const

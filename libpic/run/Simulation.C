@@ -49,11 +49,12 @@ double peakMemoryMiB()
 
 Simulation::Simulation(const RunOptions& options, std::unique_ptr<Case> c)
     : options_(options), case_(std::move(c)), solver_(*case_->solver), time_(case_->time), step_(case_->step),
-      timeDigits_(case_->timeControl->timePrecision())
+      times_(options.caseDir, {case_->time, case_->step, case_->context.startTimeName},
+             case_->timeControl->timePrecision(), case_->writeGrid, case_->timeControl->purgeWrite(),
+             case_->controlDict)
 {
     guard_ = std::make_unique<StabilityGuard>(case_->stability, solver_, case_->context.bodyNames, case_->gravity,
                                               case_->hasLoads, snapshotFile());
-    onDisk_ = {time_, step_, case_->context.startTimeName};
     if (options_.tuneThreads && threadCount() > 1) tuner_ = std::make_unique<ThreadTuner>(threadCount());
     // Every keyword has been read by now: what is left is a typo or a leftover.
     case_->warnUnused();
@@ -155,84 +156,13 @@ void Simulation::writeState(const Particles& particles, double time, long step, 
     });
 }
 
-std::string Simulation::timeDirectoryName(double t)
-{
-    // A time this run wrote already keeps its name (the same state written again).
-    const auto sameTime = [](double a, double b) { return std::abs(a - b) <= 1e-12 * std::max(1.0, std::abs(b)); };
-    for (const auto& w : written_)
-        if (sameTime(w.first, t)) return w.second;
-    // A name fits when no other directory of this run has it and it reads back nearer t than
-    // the previous write (or the start): 0.15 is not written as "0.2" before 0.2 comes.
-    const double previous = written_.empty() ? std::stod(case_->context.startTimeName) : written_.back().first;
-    const auto free = [&](const std::string& n) {
-        if (n == case_->context.startTimeName) return false;
-        for (const auto& w : written_)
-            if (w.second == n) return false;
-        return true;
-    };
-    // Name n reads back as time `of`, nearer it than half the spacing to `other`.
-    const auto readsBack = [](const std::string& n, double of, double other) {
-        return std::abs(std::stod(n) - of) <= 0.5 * std::abs(of - other);
-    };
-    const auto fits = [&](const std::string& n) { return free(n) && readsBack(n, t, previous); };
-    std::string name = timeName(t, timeDigits_);
-    if (fits(name)) return name;
-    const std::string unfit = name;
-    if (!written_.empty() && written_.back().second == unfit && readsBack(unfit, t, previous)) {
-        // t's name is the rounded name of the previous write just before it (a last write at
-        // endTime after a write at nearly the same time): that one takes the digits that tell
-        // it from t, so that each directory holds the state its name says.
-        auto& last = written_.back();
-        std::string moved;
-        for (int d = timeDigits_ + 1; d <= 17 && moved.empty(); ++d) {
-            const std::string n = timeName(last.first, d);
-            if (n != unfit && free(n) && readsBack(n, last.first, t)) moved = n;
-        }
-        if (moved.empty()) throw RunError("time " + timeName(t, 17) + " s: no directory name of up to 17 digits is free");
-        fs::rename(fs::path(options_.caseDir) / last.second, fs::path(options_.caseDir) / moved);
-        PvdCollection pvd(pvdPath(options_.caseDir));
-        pvd.removeTime(last.first);
-        pvd.add(last.first, moved + "/particles.vtp", 0);
-        if (case_->writeGrid) pvd.add(last.first, moved + "/grid.vti", 1);
-        pvd.write();
-        if (onDisk_.name == last.second) onDisk_.name = moved;
-        log() << "Time directory " << last.second << " (time " << std::setprecision(12) << last.first
-              << " s) renamed " << moved << ": time " << t << " s is written as " << unfit << "\n";
-        last.second = moved;
-        return unfit;
-    }
-    int digits = timeDigits_;
-    while (!fits(name) && digits < 17) name = timeName(t, ++digits);
-    if (!fits(name)) throw RunError("time " + timeName(t, 17) + " s: no directory name of up to 17 digits is free");
-    std::ostringstream os;
-    os << "keyword 'timePrecision': " << timeDigits_ << " digits would name time " << std::setprecision(12) << t
-       << " s '" << unfit << "' (another time's name, or nearer another time); time directories get " << digits
-       << " digits from now on (raise timePrecision to keep their names alike)";
-    warning(case_->controlDict.fileName(), case_->controlDict.lineOf("timePrecision"), os.str());
-    timeDigits_ = digits;
-    return name;
-}
-
 void Simulation::write()
 {
     auto timer = solver_.timers().time("output");
-    const std::string name = timeDirectoryName(time_);
-    const std::string& dir = options_.caseDir;
+    const std::string name = times_.nameFor(time_);
     writeState(solver_.particles(), time_, step_, deltaT_, solver_.removedMass(), name);
-    onDisk_ = {time_, step_, name};
-    guard_->stateWritten((fs::path(dir) / name / "particles.vtp").string(), time_, step_, deltaT_);
-    PvdCollection pvd(pvdPath(dir));
-    pvd.add(time_, name + "/particles.vtp", 0);
-    if (case_->writeGrid) pvd.add(time_, name + "/grid.vti", 1);
-    // purgeWrite: like OpenFOAM, only directories this run wrote are removed, never the start.
-    written_.push_back({time_, name});
-    while (case_->timeControl->purgeWrite() > 0 &&
-           static_cast<int>(written_.size()) > case_->timeControl->purgeWrite()) {
-        pvd.removeTime(written_.front().first);
-        removeTimeDirectory(dir, written_.front().second);
-        written_.pop_front();
-    }
-    pvd.write();
+    guard_->stateWritten((fs::path(options_.caseDir) / name / "particles.vtp").string(), time_, step_, deltaT_);
+    times_.written(time_, step_, name);
 }
 
 void Simulation::stop(const std::optional<StabilityTrip>& trip, const std::string& solverMessage)
@@ -240,23 +170,18 @@ void Simulation::stop(const std::optional<StabilityTrip>& trip, const std::strin
     std::ostringstream where;
     try {
         if (trip && trip->stateIsGood) {
-            if (onDisk_.step != step_) write();
-        } else if (const GoodState& good = guard_->lastGood(); good.step > onDisk_.step) {
-            const std::string name = timeDirectoryName(good.time);
+            if (times_.newest().step != step_) write();
+        } else if (const GoodState& good = guard_->lastGood(); good.step > times_.newest().step) {
+            const std::string name = times_.nameFor(good.time);
             Particles particles = good.particles();  // read back once, for both files
             writeState(particles, good.time, good.step, good.deltaT, good.removedMass, name);
-            PvdCollection pvd(pvdPath(options_.caseDir));
-            pvd.add(good.time, name + "/particles.vtp", 0);
-            if (case_->writeGrid) {
+            if (case_->writeGrid)
                 writeGoodStateGrid(std::move(particles), good.time,
                                    (fs::path(options_.caseDir) / name / "grid.vti").string());
-                pvd.add(good.time, name + "/grid.vti", 1);
-            }
-            pvd.write();
-            onDisk_ = {good.time, good.step, name};
+            times_.writtenOutOfTurn(good.time, good.step, name);
         }
-        where << "; last good state: time " << onDisk_.time << " s (step " << onDisk_.step << ") in "
-              << (fs::path(options_.caseDir) / onDisk_.name).string();
+        where << "; last good state: time " << times_.newest().time << " s (step " << times_.newest().step
+              << ") in " << times_.newestPath();
     } catch (const std::exception& e) {
         where << "; the last good state could not be written: " << e.what();
     }
@@ -406,7 +331,7 @@ void Simulation::honourStopSignal(bool writtenLast, Clock::time_point wallStart)
     wall << std::fixed << std::setprecision(1) << std::chrono::duration<double>(Clock::now() - wallStart).count();
     throw StopRequest(signal, StopSignals::name(signal) + " at t = " + exactNumber(time_) + " s (step " +
                                   std::to_string(step_) + ", wall " + wall.str() + " s): the state is written to " +
-                                  (fs::path(options_.caseDir) / onDisk_.name).string());
+                                  times_.newestPath());
 }
 
 void Simulation::reportProgress(Clock::time_point wallStart, Clock::time_point& lastProgress, double tStart)
