@@ -4,7 +4,6 @@
 #include "coupling/LocalDamping.H"
 #include "engine/EnginePass.H"
 
-
 namespace gpic {
 
 GPIC_REGISTER(GridCoupling, SingleField, "singleField");

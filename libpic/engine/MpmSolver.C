@@ -1,6 +1,5 @@
 #include "engine/MpmSolver.H"
 
-#include "loads/AppliedLoads.H"
 #include "schemes/AffineVelocity.H"
 #include "schemes/XpicFilter.H"
 
@@ -130,8 +129,6 @@ double MpmSolver::passTimeStep(std::size_t m) const
         dt = std::min(dt, pass->maxDeltaT(m, grid_.minCellSize(), massScale_.empty() ? 1.0 : massScale_[m]));
     return dt;
 }
-
-bool MpmSolver::hasLoads() const { return find<AppliedLoads>() != nullptr; }
 
 std::string MpmSolver::passTimeStepName() const
 {
@@ -504,9 +501,7 @@ double MpmSolver::maxParticleSpeed() const
 double MpmSolver::stepLength() const
 {
     double length = grid_.minCellSize();
-    const auto deforms = [this](std::size_t q) {
-        return !driverOf(q) && materialDeforms_[static_cast<std::size_t>(particles_.material[q])];
-    };
+    const DeformingParticles deforms{materialDeforms_, rigid_};
     for (const auto& pass : passes_) length = std::min(length, pass->stepLength(grid_, particles_, deforms));
     return length;
 }

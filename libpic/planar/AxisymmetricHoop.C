@@ -13,7 +13,7 @@ GPIC_REGISTER_PASS(AxisymmetricHoop, "axisymmetricHoop")
 AxisymmetricHoop::AxisymmetricHoop(PassScene& scene) : AxisymmetricHoop(scene.inputs.cellMeanDilatation) {}
 
 double AxisymmetricHoop::stepLength(const Grid& grid, const Particles& particles,
-                                    const std::function<bool(std::size_t)>& deforms) const
+                                    const DeformingParticles& deforms) const
 {
     // The hoop term stiffens the radial motion of a node at radius r_i by about a quarter of
     // (h / r_i)^2 of its in-plane stiffness (lumped mass, 2 x 2 particles a cell: 0.19 at the
@@ -22,7 +22,7 @@ double AxisymmetricHoop::stepLength(const Grid& grid, const Particles& particles
     const double hr = grid.cellSize().x(), r0 = grid.origin().x();
     double rNode = std::numeric_limits<double>::infinity();
     for (std::size_t q = 0; q < particles.size(); ++q) {
-        if (!deforms(q)) continue;
+        if (!deforms(particles, q)) continue;
         const double r = r0 + std::floor((particles.x[q].x() - r0) / hr) * hr;
         rNode = std::min(rNode, r > 0.5 * hr ? r : r + hr);
     }

@@ -191,7 +191,7 @@ void Simulation::stop(const std::optional<StabilityTrip>& trip, const std::strin
 void Simulation::writeGoodStateGrid(Particles particles, double time, const std::string& path)
 {
     // The run ends here: the engine may take the good state's particles to project them.
-    if (!solver_.hasLoads()) {
+    if (!solver_.passesHoldIndices()) {
         solver_.replaceParticles(std::move(particles));
         solver_.setTime(time);
         solver_.projectToGrid();
