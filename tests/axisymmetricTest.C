@@ -49,7 +49,7 @@ fs::path cylinder(const fs::path& dir, double rIn, double rOut, const std::strin
 //- The largest difference between a column of cells' mean stresses (sigma_rr, sigma_tt,
 //  sigma_zz) and Lame's for the tube a < r < b of Poisson's ratio nuTube (the loaded column
 //  r < a + 1 cm aside).
-double worstColumnError(const Particles& s, double a, double b, double nuTube, bool print = false)
+double worstColumnError(const Particles<2>& s, double a, double b, double nuTube, bool print = false)
 {
     const double A = p * a * a / (b * b - a * a), B = A * b * b;
     double worst = 0;
@@ -90,7 +90,7 @@ TEST_P(AxisymmetricShapes, aThickCylinderUnderInternalPressureHasLamesStresses)
     const double a = 0.1, b = 0.2;
     const fs::path dir = cylinder(scratch.path() / "lame", a, b, "from (0.1 0.04); to (0.1 0);", "", GetParam());
     const auto simulation = runAndKeep(dir);
-    const Particles& s = simulation->solver().particles();
+    const Particles<2>& s = simulation->solver().particles();
 
     double mass = 0;
     for (double m : s.m) mass += m;
@@ -122,7 +122,7 @@ TEST_P(AxisymmetricShapes, aSolidCylinderUnderExternalPressureIsUniformUpToTheAx
     const double R = 0.1;
     const fs::path dir = cylinder(scratch.path() / "solid", 0.0, R, "from (0.1 0); to (0.1 0.04);", "", GetParam());
     const auto simulation = runAndKeep(dir);
-    const Particles& s = simulation->solver().particles();
+    const Particles<2>& s = simulation->solver().particles();
     double worst = 0, worstNearAxis = 0;
     for (std::size_t q = 0; q < s.size(); ++q) {
         const double err = std::max({std::abs(s.sigma[q][XX] + p), std::abs(s.sigma[q][ZZ] + p),

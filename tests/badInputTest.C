@@ -509,7 +509,7 @@ TEST_F(BadInput, particlesSpeedingPastAFixedStepStopTheRunWithTheLimit)
                    {"run stopped", "at time 0.55", "stability limit", "deltaT"});
     // The time directories of the failed run are complete.
     for (const char* t : {"0.3", "0.4", "0.5"}) {
-        gpic::Particles p;
+        gpic::Particles<2> p;
         double time = 0;
         EXPECT_NO_THROW(gpic::readParticles((dir / t / "particles.vtp").string(), p, time)) << t;
         EXPECT_EQ(p.size(), 632u) << t;

@@ -23,14 +23,14 @@ namespace {
 //- Every step: the load on each body and the number of contact nodes.
 struct LoadRecord {
     double time;
-    std::vector<gpic::RigidBodyLoad> loads;
+    std::vector<gpic::RigidBodyLoad<2>> loads;
     int contactNodes;
 };
 
 class LoadRecorder : public gpic::FunctionObject {
 public:
     LoadRecorder(const gpic::Dictionary& dict, const gpic::RunContext& context) : FunctionObject(dict, context) {}
-    void write(const gpic::MpmSolver& s, double time) override
+    void write(const gpic::MpmSolver<2>& s, double time) override
     {
         records().push_back({time, s.rigidBodyLoads(), s.contactNodes()});
     }
@@ -80,7 +80,7 @@ const std::string block = "type rectangle; min (0.2 0.1); max (0.6 0.4);";
 const std::string plateOnTop = "type rectangle; min (0.1 0.4); max (0.7 0.5);";
 
 //- Largest particle speed of body b.
-double maxSpeed(const gpic::Particles& p, int b)
+double maxSpeed(const gpic::Particles<2>& p, int b)
 {
     double v = 0;
     for (std::size_t q = 0; q < p.size(); ++q)
@@ -107,7 +107,7 @@ TEST(BreakAway, aPlatePulledOffABlockNeverPullsItAndLeavesItAtRest)
         EXPECT_EQ(r.loads[1].force.norm(), 0.0) << "t = " << r.time;
         EXPECT_EQ(r.loads[0].force.norm(), 0.0) << "t = " << r.time;
     }
-    const gpic::Particles& p = simulation->solver().particles();
+    const gpic::Particles<2>& p = simulation->solver().particles();
     EXPECT_EQ(maxSpeed(p, 0), 0.0);  // the block stays exactly at rest
     for (std::size_t q = 0; q < p.size(); ++q)
         if (p.body[q] == 0) {
@@ -124,7 +124,7 @@ TEST(BreakAway, theSingleNoSlipFieldDragsTheBlockAlong)
     double pull = 0;
     for (const auto& r : LoadRecorder::records()) pull = std::min(pull, r.loads[1].force.y());
     EXPECT_LT(pull, -1.0);  // N/m: the block hangs on the plate
-    const gpic::Particles& p = simulation->solver().particles();
+    const gpic::Particles<2>& p = simulation->solver().particles();
     double momentum = 0;
     for (std::size_t q = 0; q < p.size(); ++q)
         if (p.body[q] == 0) momentum += p.m[q] * p.v[q].y();
@@ -140,7 +140,7 @@ TEST(RigidContact, aPistonCompressesABlockToTheUniaxialStrainStressAndFeelsItsRe
                                            "law coulombFriction;\nmu 0.3;\nnormals rigidSurface;\n");
     LoadRecorder::records().clear();
     const auto simulation = runAndKeep(dir);
-    const gpic::Particles& p = simulation->solver().particles();
+    const gpic::Particles<2>& p = simulation->solver().particles();
 
     const Vector2 mean = piston::meanBlockStress(p);
     const double s11 = piston::sigma11(), s22 = piston::sigma22(), h = piston::h;

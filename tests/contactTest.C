@@ -16,11 +16,11 @@ using gpic::Vector2;
 
 namespace {
 
-std::unique_ptr<gpic::ContactLaw> coulomb(const std::string& text,
+std::unique_ptr<gpic::ContactLaw<2>> coulomb(const std::string& text,
                                           const std::vector<std::string>& bodies = {"a", "b"})
 {
     const gpic::Dictionary d = gpic::Dictionary::parse(text, "constant/contactProperties");
-    return gpic::ContactLaw::New(d, bodies);
+    return gpic::ContactLaw<2>::New(d, bodies);
 }
 
 } // namespace
@@ -82,7 +82,7 @@ TEST(CoulombFrictionLaw, badInputNamesFileLineAndChoices)
 TEST(FrictionalWall, removesTheApproachAndAtMostMuOfItFromTheSlidingNeverReversingIt)
 {
     const gpic::Dictionary d = gpic::Dictionary::parse("type frictionalWall; mu 0.3;", "constant/grid");
-    const gpic::FrictionalWall wall(d, gpic::GridSide::bottom);
+    const gpic::FrictionalWall<2> wall(d, gpic::GridSide::bottom);
     const std::vector<int> nodes{0, 1, 2};
     const double dt = 1e-3;
     std::vector<Vector2> v{{1.0, -0.5}, {0.1, -1.0}, {1.0, 0.5}};
@@ -113,7 +113,7 @@ TEST(RigidSurface, normalsOfCircleRectangleAndARotatedBody)
     EXPECT_NEAR((box.outwardNormal(Vector2(2, 1)) - Vector2(1, 1).normalized()).norm(), 0, 1e-14);
 
     // The same box carried by its particles: turned by 30 degrees about (1, 0.5), moved by (3, 0).
-    gpic::Particles p;
+    gpic::Particles<2> p;
     const double th = M_PI / 6;
     const Eigen::Matrix2d R = (Eigen::Matrix2d() << std::cos(th), -std::sin(th), std::sin(th), std::cos(th)).finished();
     const Vector2 c0(1, 0.5), shift(3, 0);
@@ -202,7 +202,7 @@ struct State {
 State runState(const fs::path& dir, bool expectContactPass)
 {
     const auto simulation = runAndKeep(dir);
-    const gpic::MpmSolver& s = simulation->solver();
+    const gpic::MpmSolver<2>& s = simulation->solver();
     EXPECT_EQ(s.contact() != nullptr, expectContactPass) << dir;
     EXPECT_EQ(s.timers().seconds("contact") > 0.0, expectContactPass) << dir;
     return {s.particles().x, s.particles().v, s.particles().sigma};
@@ -270,7 +270,7 @@ TEST(ContactRestart, aRunWithAContactPassRestartsBitwise)
             options.quiet = true;
             gpic::Simulation restarted(options);
             restarted.run();
-            const gpic::Particles& p = restarted.solver().particles();
+            const gpic::Particles<2>& p = restarted.solver().particles();
             states.push_back({p.x, p.v, p.sigma});
         } else {
             states.push_back(runState(dir, true));

@@ -18,17 +18,17 @@ using namespace gpic;
 
 namespace {
 
-std::unique_ptr<Material> material(const std::string& body)
+std::unique_ptr<Material<2>> material(const std::string& body)
 {
     const Dictionary d = Dictionary::parse("m { " + body + " }\n", "constant/materials");
-    return Material::New(d.subDict("m"));
+    return Material<2>::New(d.subDict("m"));
 }
 
 //- One particle of `m` with the polar arrays and history the engine would give it, at an
 //  isotropic stress p0 (sigma21 = sigma12 = 0).
-Particles point(const Material& m, double p0, bool polar)
+Particles<2> point(const Material<2>& m, double p0, bool polar)
 {
-    Particles p;
+    Particles<2> p;
     p.add(Vector2::Zero(), m.rho(), 1.0, Vector2(0.5, 0.5), 0, 0);  // packed: m = rho V
     m.declareFields(p);
     if (polar) p.carry(FieldGroup::polar);
@@ -36,7 +36,7 @@ Particles point(const Material& m, double p0, bool polar)
     return p;
 }
 
-void step(const Material& m, Particles& p, const SymTensor& de, double r = 0, const Vector2& dk = Vector2::Zero())
+void step(const Material<2>& m, Particles<2>& p, const SymTensor& de, double r = 0, const Vector2& dk = Vector2::Zero())
 {
     p.dEps[0] = de;
     p.dOmega[0] = 0;
@@ -56,7 +56,7 @@ TEST(CosseratDruckerPrager, returnEndsOnTheYieldSurfaceWithCoupleStresses)
     const auto m = material("type cosseratDruckerPrager; rho 778; G 8.95e6; nu 0.2; l 0.01; phi 26; psi 2;");
     const auto& dp = dynamic_cast<const CosseratDruckerPrager&>(*m);
     EXPECT_NEAR(dp.elastic().Gc(), 2 * 8.95e6, 1e-6);  // eq. I.5.9
-    Particles p = point(*m, -50e3, true);
+    Particles<2> p = point(*m, -50e3, true);
     int plastic = 0;
     for (int k = 0; k < 200; ++k) {
         step(*m, p, SymTensor(-2e-6, 1e-6, 0, 2e-5), 1.5e-5 * std::sin(0.05 * k), Vector2(3e-3, -2e-3));
@@ -82,7 +82,7 @@ TEST(CosseratDruckerPrager, withoutPolarTermsFollowsTheNonpolarDruckerPragerInSh
     const auto ref = material("type druckerPrager; rho 1600; K 5e6; G 3e6; qPhi 0.4; kPhi 2e3; qPsi 0.1;");
     const auto pol = material("type cosseratDruckerPrager; rho 1600; G 3e6; nu " + std::to_string(nu) +
                               "; Gc 0; l 0; alpha 0.4; beta 0.1; c 2e3; meanStress threeD;");
-    Particles a = point(*ref, -20e3, false), b = point(*pol, -20e3, true);
+    Particles<2> a = point(*ref, -20e3, false), b = point(*pol, -20e3, true);
     double worst = 0;
     int plastic = 0;
     for (int k = 0; k < 300; ++k) {
@@ -104,13 +104,13 @@ TEST(CosseratDruckerPrager, withoutPolarTermsFollowsTheNonpolarDruckerPragerInSh
 //- Plane-strain biaxial compression of one point: eps22 shortened in `steps` equal steps,
 //  sigma11 held at its start (the lateral strain found by Newton on the elastic stiffness).
 //  Returns sigma22 / sigma11 at the end.
-double biaxialStrengthRatio(const Material& m, bool polar, double confining, int steps)
+double biaxialStrengthRatio(const Material<2>& m, bool polar, double confining, int steps)
 {
-    Particles p = point(m, -confining, polar);
+    Particles<2> p = point(m, -confining, polar);
     const double lateralStiffness = 2.76e6 * (1 - 0.2) / ((1 + 0.2) * (1 - 2 * 0.2));  // E, nu of corn
     double de11 = 0;
     for (int k = 0; k < steps; ++k) {
-        const Particles start = p;
+        const Particles<2> start = p;
         for (int it = 0; it < 30; ++it) {
             p = start;
             step(m, p, SymTensor(de11, -1e-5, 0, 0));
@@ -143,7 +143,7 @@ TEST(CosseratDruckerPrager, planeStrainStrengthIsMohrCoulombsForAlphaSinPhi)
 TEST(CosseratDruckerPrager, aTrialBeyondTheApexReturnsToIt)
 {
     const auto m = material("type cosseratDruckerPrager; rho 1600; G 3e6; nu 0.3; l 0.01; alpha 0.5; c 1e3;");
-    Particles p = point(*m, 0, true);
+    Particles<2> p = point(*m, 0, true);
     step(*m, p, SymTensor(1e-3, 1e-3, 0, 1e-5));  // strong extension
     EXPECT_EQ(p.history("yieldState")[0], 3);
     EXPECT_NEAR(p.sigma[0][XX], 1e3 / 0.5, 1e-6);

@@ -28,7 +28,7 @@ void footingCase(const fs::path& dir, const std::string& material)
 }
 
 struct RunResult {
-    Particles particles;
+    Particles<2> particles;
     bool hasRotation = false;
     double bytesPerParticle = 0;
 };
@@ -46,7 +46,7 @@ RunResult run(const std::string& material)
 const char* const nonpolar = "type linearElastic; rho 2000; E 2.6e6; nu 0.3;";  // G = 1e6
 
 //- Largest difference of position and stress, relative to the largest displacement and stress.
-std::pair<double, double> difference(const Particles& a, const Particles& b)
+std::pair<double, double> difference(const Particles<2>& a, const Particles<2>& b)
 {
     EXPECT_EQ(a.size(), b.size());
     double dx = 0, u = 0, ds = 0, s = 0;

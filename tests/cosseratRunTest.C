@@ -35,7 +35,7 @@ void columnCase(const fs::path& dir, const std::string& scheme, double endTime)
     writeDictionary(dir / "constant/g", "value (0 -9.81);\n");
 }
 
-void expectSame(const Particles& a, const Particles& b)
+void expectSame(const Particles<2>& a, const Particles<2>& b)
 {
     ASSERT_TRUE(a.carries(FieldGroup::polar));
     ASSERT_TRUE(b.carries(FieldGroup::polar));
@@ -67,7 +67,7 @@ TEST(CosseratRun, aPolarSceneIsTheSameAtOneAndTwoThreads)
         ScratchDir scratch("cosseratThreads");
         columnCase(scratch.path() / "one", scheme, 1e-3);
         columnCase(scratch.path() / "two", scheme, 1e-3);
-        const Particles one = runAtThreads(scratch.path() / "one", 1), two = runAtThreads(scratch.path() / "two", 2);
+        const Particles<2> one = runAtThreads(scratch.path() / "one", 1), two = runAtThreads(scratch.path() / "two", 2);
         EXPECT_GT(largest(one.polar.w), 0.0) << "the column turns its grains";
         EXPECT_GT(largest(one.history("yieldState")), 0.0) << "and yields";
         expectSame(one, two);
@@ -80,7 +80,7 @@ TEST(CosseratRun, aRestartContinuesBitwiseAsTheStraightRun)
     const fs::path straight = scratch.path() / "straight", split = scratch.path() / "split";
     columnCase(straight, "USL", 2e-3);
     columnCase(split, "USL", 1e-3);
-    const Particles whole = runAndKeep(straight)->solver().particles();
+    const Particles<2> whole = runAndKeep(straight)->solver().particles();
     runAndKeep(split);
     setEntry(split / "system/controlDict", "endTime", "2e-3");
     RunOptions options;
@@ -93,7 +93,7 @@ TEST(CosseratRun, aRestartContinuesBitwiseAsTheStraightRun)
 
     // The written file holds the polar fields; a nonpolar reader sees no history in them.
     double t = 0;
-    Particles read;
+    Particles<2> read;
     const auto times = listTimeDirectories(split.string());
     readParticles((split / times.back().second / "particles.vtp").string(), read, t);
     EXPECT_TRUE(read.carries(FieldGroup::polar));

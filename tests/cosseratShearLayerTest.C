@@ -52,7 +52,7 @@ LayerResult shearLayer(int nCells)
     writeDictionary(dir / "constant/rigidBodies",
                     "plate { type prescribedVelocity; velocity table ((0 0.02 0) (0.45 0.02 0) (0.55 0 0)); }\n");
     auto simulation = runAndKeep(dir);
-    const Particles& p = simulation->solver().particles();
+    const Particles<2>& p = simulation->solver().particles();
     EXPECT_TRUE(p.carries(FieldGroup::polar));
 
     double U = 0;

@@ -19,10 +19,10 @@ namespace {
 const double pi = 3.14159265358979323846;
 
 //- The driver of the one body in a constant/rigidBodies text.
-std::unique_ptr<RigidBodyDriver> driver(const std::string& entry)
+std::unique_ptr<RigidBodyDriver<2>> driver(const std::string& entry)
 {
     const Dictionary d = Dictionary::parse("body { " + entry + " }", "constant/rigidBodies");
-    return RigidBodyDriver::New(d.subDict("body"));
+    return RigidBodyDriver<2>::New(d.subDict("body"));
 }
 
 //- The InputError message of a driver, or "" when it constructs.
@@ -30,7 +30,7 @@ std::string driverError(const std::string& text)
 {
     try {
         const Dictionary d = Dictionary::parse(text, "constant/rigidBodies");
-        RigidBodyDriver::New(d.subDict("body"));
+        RigidBodyDriver<2>::New(d.subDict("body"));
     } catch (const InputError& e) {
         return e.what();
     }
@@ -186,8 +186,8 @@ TEST(Drivers, aTargetForceStopsTheBodyWhenTheMaterialPushesBackHardEnough)
 {
     auto d = driver("type prescribedVelocity; velocity (0 -0.01); targetForce (0 100);");
     const auto* p = dynamic_cast<const PrescribedVelocityDriver*>(d.get());
-    d->attach(RigidBodyInfo{1.0, Vector2::Zero(), 0.0, Vector2(0, -0.01), Vector2::Zero()});
-    RigidBodyLoad load;
+    d->attach(RigidBodyInfo<2>{1.0, Vector2::Zero(), 0.0, Vector2(0, -0.01), Vector2::Zero()});
+    RigidBodyLoad<2> load;
     load.force = Vector2(500, 99.9);  // large, but not along the target
     d->advance(0.0, 1e-3, load);
     EXPECT_FALSE(p->stopped());
@@ -202,11 +202,11 @@ TEST(Drivers, aTargetForceStopsTheBodyWhenTheMaterialPushesBackHardEnough)
 
     // A restart finds the body at rest although its prescribed motion is not: it had stopped.
     auto r = driver("type prescribedVelocity; velocity (0 -0.01); targetForce (0 100);");
-    r->attach(RigidBodyInfo{1.0, Vector2::Zero(), 0.0, Vector2::Zero(), Vector2::Zero()});
+    r->attach(RigidBodyInfo<2>{1.0, Vector2::Zero(), 0.0, Vector2::Zero(), Vector2::Zero()});
     EXPECT_TRUE(r->velocity(0.5, Vector2::Zero()).isZero(0.0));
     // ... but a run from t = 0 with the body at rest moves it.
     auto s = driver("type prescribedVelocity; velocity (0 -0.01); targetForce (0 100);");
-    s->attach(RigidBodyInfo{1.0, Vector2::Zero(), 0.0, Vector2::Zero(), Vector2::Zero()});
+    s->attach(RigidBodyInfo<2>{1.0, Vector2::Zero(), 0.0, Vector2::Zero(), Vector2::Zero()});
     EXPECT_EQ(s->velocity(0.0, Vector2::Zero()).y(), -0.01);
 }
 
@@ -337,13 +337,13 @@ TEST(Drivers, aWeightedBodyTakesItsVelocityFromItsParticlesOnARestart)
 {
     // Restart-safe: the state of the free motion is the particles' mean velocity.
     auto d = driver("type weighted; free (0 1); velocity (0.2 0); addedForce (0 -10);");
-    d->attach(RigidBodyInfo{2.0, Vector2::Zero(), 0.0, Vector2(0.7, -0.3), Vector2(0, -9.81)});
+    d->attach(RigidBodyInfo<2>{2.0, Vector2::Zero(), 0.0, Vector2(0.7, -0.3), Vector2(0, -9.81)});
     const double t0 = 1.5, dt = 1e-3;
     EXPECT_TRUE(d->velocity(t0, Vector2::Zero()).isApprox(Vector2(0.2, -0.3), 1e-15));  // x prescribed
     // Before any reaction: weight and added force, a = g + F/m.
     const double a0 = -9.81 - 10.0 / 2.0;
     EXPECT_NEAR(d->velocity(t0 + dt, Vector2::Zero()).y(), -0.3 + dt * a0, 1e-13);
-    RigidBodyLoad load;
+    RigidBodyLoad<2> load;
     load.force = Vector2(3, 29.62);  // the material pushes up with m g + 10 N/m
     d->advance(t0, dt, load);
     EXPECT_NEAR(d->velocity(t0 + dt, Vector2::Zero()).y(), -0.3 + dt * a0, 1e-13);  // the step taken

@@ -50,7 +50,7 @@ TEST(ElasticFooting, principalStressesUnderTheFootingMatchPoulosAndDavis)
     copyCase(tutorialPath("verification/elasticFooting"), dir);
     setEntry(dir / "system/controlDict", "writeInterval", "0.1");
     const auto simulation = runAndKeep(dir);
-    const Particles& p = simulation->solver().particles();
+    const Particles<2>& p = simulation->solver().particles();
 
     // The first column of particles, next to the symmetry plane, compared at its own x1.
     double x1 = surface;

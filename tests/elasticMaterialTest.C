@@ -10,17 +10,17 @@ using namespace gpic;
 
 namespace {
 
-std::unique_ptr<Material> elastic(double E, double nu)
+std::unique_ptr<Material<2>> elastic(double E, double nu)
 {
     Dictionary d = Dictionary::parse("type linearElastic; rho 2000; E " + std::to_string(E) +
                                          "; nu " + std::to_string(nu) + ";",
                                      "constant/materials/test");
-    return Material::New(d);
+    return Material<2>::New(d);
 }
 
-Particles onePoint()
+Particles<2> onePoint()
 {
-    Particles p;
+    Particles<2> p;
     p.add(Vector2::Zero(), 1.0, 1.0, Vector2::Constant(0.25), 0, 0);
     return p;
 }
@@ -32,7 +32,7 @@ TEST(LinearElastic, uniaxialStrainIncrementGivesTheConstrainedModulus)
     // d sigma11 = alpha1 d eps11, d sigma22 = d sigma33 = alpha2 d eps11 (eq. H.2.1, H.2.2)
     const double E = 1e7, nu = 0.3, K = E / (3 * (1 - 2 * nu)), G = E / (2 * (1 + nu));
     auto m = elastic(E, nu);
-    Particles p = onePoint();
+    Particles<2> p = onePoint();
     p.dEps[0] = SymTensor(-1e-4, 0, 0, 0);
     m->updateStress(p, {0, 1, 0}, 1e-3);
     EXPECT_NEAR(p.sigma[0][XX], -(K + 4 * G / 3) * 1e-4, 1e-6);
@@ -54,7 +54,7 @@ TEST(LinearElastic, rigidRotationByNinetyDegreesRotatesTheStressAndKeepsInvarian
     // s11 and s22 swap and s12 changes sign; the invariants stay (to 1e-6 relative, the
     // objectivity requirement; a first-order Jaumann update misses it by 2 %).
     auto m = elastic(1e7, 0.3);
-    Particles p = onePoint();
+    Particles<2> p = onePoint();
     const SymTensor s0(-3e5, -1e5, -1.2e5, 4e4);
     p.sigma[0] = s0;
     const int steps = 100;

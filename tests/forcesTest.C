@@ -241,7 +241,7 @@ TEST(PicForces, theStressAlongAFaceIsTheNodalForceOverItsTributaryLength)
     ScratchDir scratch("surfaceSynthetic");
     const fs::path dir = scratch.path() / "case";
     fs::create_directories(dir / "0.5");
-    Grid grid(Vector2::Zero(), Vector2(0.1, 0.1), 8, 6);
+    Grid<2> grid(Vector2::Zero(), Vector2(0.1, 0.1), 8, 6);
     grid.fContact.assign(static_cast<std::size_t>(grid.nNodes()), Vector2::Zero());
     const double h = 0.1, p = 2000, tau = 500;
     for (int j = 0; j <= 4; ++j) {

@@ -75,7 +75,7 @@ TEST(GeostaticColumn, jakyInitialStressFromTheFrictionAngle)
     replaceText(dir / "constant/bodies", "particlesPerCell 2;",
                 "particlesPerCell 2; initialStress { type geostatic; phi 30; }");
     gpic::initialiseCase(dir.string());
-    gpic::Particles p;
+    gpic::Particles<2> p;
     double time = -1;
     gpic::readParticles((dir / "0/particles.vtp").string(), p, time);
     ASSERT_EQ(p.size(), 800u);

@@ -31,8 +31,8 @@ const double p0 = -1e5;  // a confinement that keeps the step inside every yield
 //  `looseness` times its packed volume; `state` gets its yieldState.
 double compressed(const std::string& entries, double looseness, double& state, bool polar = false)
 {
-    const auto m = Material::New(Dictionary::parse(entries, "constant/materials/sand"));
-    Particles p;
+    const auto m = Material<2>::New(Dictionary::parse(entries, "constant/materials/sand"));
+    Particles<2> p;
     p.add(Vector2::Zero(), rho, looseness, Vector2::Constant(0.5), 0, 0);  // V = looseness m / rho
     m->declareFields(p);
     if (polar) p.carry(FieldGroup::polar);
@@ -69,7 +69,7 @@ Drop dropLoosePoint(const std::string& extra)
     writeDictionary(dir / "system/controlDict",
                     "endTime 0.03; deltaT 1; adjustTimeStep yes; maxCourant 0.5; writeControl adjustableRunTime; "
                     "writeInterval 0.0005; timePrecision 6;\n");
-    initialiseAndEdit(dir, [](Particles& p) {
+    initialiseAndEdit(dir, [](Particles<2>& p) {
         EXPECT_EQ(p.size(), 1u);
         p.x[0].y() = 0.0025 + 2e-5;  // just above the row whose lower nodes are fixed
         p.V[0] *= 25;
@@ -89,7 +89,7 @@ Drop dropLoosePoint(const std::string& extra)
     }
     bool arrived = false;
     for (const auto& [time, name] : listTimeDirectories(dir.string())) {
-        Particles s;
+        Particles<2> s;
         double tt = 0;
         readParticles((dir / name / "particles.vtp").string(), s, tt);
         if (s.size() != 1) continue;

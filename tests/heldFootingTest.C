@@ -92,7 +92,7 @@ TEST(HeldFooting, aHeldSmoothFootingCarriesItsLoadSteadilyAndVertically)
     ScratchDir scratch("heldFooting");
     const fs::path dir = writeRigidFootingCase(scratch);
     const auto simulation = runAndKeep(dir);
-    const Particles& p = simulation->solver().particles();
+    const Particles<2>& p = simulation->solver().particles();
 
     // The force on the footing, every step: once held (at 0.19 s) it stays at the target.
     auto forces = readColumns(dir / "postProcessing/forces/0/forces.dat");

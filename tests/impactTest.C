@@ -43,7 +43,7 @@ TEST(HighVelocityImpact, steelDiskStopsNear19mmWithTheTargetOnItsYieldSurface)
     double largest = 0;
     for (const auto& entry : fs::directory_iterator(dir)) {
         if (!fs::exists(entry.path() / "particles.vtp")) continue;
-        Particles p;
+        Particles<2> p;
         double time = 0;
         readParticles((entry.path() / "particles.vtp").string(), p, time);
         ++states;

@@ -18,11 +18,11 @@ using namespace gpic;
 namespace {
 
 struct Point {
-    std::unique_ptr<Material> m;
-    Particles p;
+    std::unique_ptr<Material<2>> m;
+    Particles<2> p;
 
     Point(const std::string& entries, const SymTensor& sigma0)
-        : m(Material::New(Dictionary::parse(entries, "constant/materials/soil")))
+        : m(Material<2>::New(Dictionary::parse(entries, "constant/materials/soil")))
     {
         p.add(Vector2::Zero(), m->rho(), 1.0, Vector2::Constant(0.5), 0, 0);  // packed: m = rho V
         m->declareFields(p);

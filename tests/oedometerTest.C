@@ -60,8 +60,8 @@ Run oedometer(double psiDeg)
     Dictionary d = Dictionary::parse("type mohrCoulomb; rho 2000; K 200e6; G 200e6; c 1e6; phi 10; psi " +
                                          std::to_string(psiDeg) + "; sigmaT 5.67e6;",
                                      "constant/materials/oedometer");
-    auto m = Material::New(d);
-    Particles p;
+    auto m = Material<2>::New(d);
+    Particles<2> p;
     p.add(Vector2::Zero(), m->rho(), 1.0, Vector2::Constant(0.5), 0, 0);  // packed: m = rho V
     m->declareFields(p);
     const double V = -10, dt = 1e-6, L = 1;

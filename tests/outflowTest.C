@@ -41,7 +41,7 @@ TEST(Outflow, aFallingBlockLeavesRowByRowAsFreeFallPredicts)
     const long steps = 600;
     fallingBlockCase(dir, "");
     auto simulation = initialisedSimulation(dir);
-    const Particles initial = simulation->solver().particles();
+    const Particles<2> initial = simulation->solver().particles();
     simulation->run();
     const double drop = g * dt * dt * steps * (steps + 1) / 2;
     double expected = 0, rowMass = 0;
@@ -49,7 +49,7 @@ TEST(Outflow, aFallingBlockLeavesRowByRowAsFreeFallPredicts)
         if (initial.x[q].y() < drop) expected += initial.m[q];
         rowMass = initial.m[q] * 20;  // 20 particles per row
     }
-    const MpmSolver& solver = simulation->solver();
+    const MpmSolver<2>& solver = simulation->solver();
     EXPECT_GT(expected, 0.3 * sum(initial.m));
     EXPECT_LT(expected, 0.7 * sum(initial.m));
     EXPECT_NEAR(solver.removedMass(), expected, 0.5 * rowMass) << "rows removed too early or too late";
@@ -71,9 +71,9 @@ TEST(Outflow, anOpeningInAWallLetsOutOnlyWhatIsAboveIt)
     writeDictionary(dir / "constant/bodies", "sand { material sand; shape { type rectangle; min (0 0); max (0.12 0.03); } particlesPerCell 2; }\n");
     writeDictionary(dir / "constant/g", "value (0 -9.81);\n");
     auto simulation = initialisedSimulation(dir);
-    const Particles initial = simulation->solver().particles();
+    const Particles<2> initial = simulation->solver().particles();
     simulation->run();
-    const MpmSolver& solver = simulation->solver();
+    const MpmSolver<2>& solver = simulation->solver();
     EXPECT_GT(solver.removedMass(), 0.05 * sum(initial.m)) << "the opening lets material out";
     EXPECT_NEAR(solver.removedMass() + sum(solver.particles().m), sum(initial.m), 1e-12 * sum(initial.m));
     // Far from the opening the floor holds: the bottom layer there has not dropped.
@@ -119,7 +119,7 @@ TEST(Outflow, massFlowLogsWhatHasFallenOutAtEachTime)
     fallingBlockCase(dir, "functions { silo { type massFlow; writeInterval 50; factor 2; "
                           "region { min (0 0); max (0.04 0.02); } } }\n");
     auto simulation = initialisedSimulation(dir);
-    const Particles initial = simulation->solver().particles();
+    const Particles<2> initial = simulation->solver().particles();
     simulation->run();
     const double removed = simulation->solver().removedMass();
     simulation.reset();  // closes postProcessing files

@@ -34,7 +34,7 @@ void expectTimeDirectories(const fs::path& dir, const std::vector<std::string>& 
     std::vector<std::string> names;
     for (const auto& [t, name] : gpic::listTimeDirectories(dir.string())) {
         names.push_back(name);
-        gpic::Particles p;
+        gpic::Particles<2> p;
         double time = -1;
         gpic::readParticles((dir / name / "particles.vtp").string(), p, time);
         EXPECT_NEAR(time, t, 1e-9) << name;
@@ -74,7 +74,7 @@ TEST(Output, writeGridAddsTheGridAsASecondParaViewPart)
     ASSERT_NE(mass, nullptr);
     double gridMass = 0;
     for (vtkIdType n = 0; n < mass->GetNumberOfTuples(); ++n) gridMass += mass->GetTuple1(n);
-    gpic::Particles p;
+    gpic::Particles<2> p;
     double t = -1;
     gpic::readParticles((dir / "0/particles.vtp").string(), p, t);
     const double particleMass = std::accumulate(p.m.begin(), p.m.end(), 0.0);
@@ -277,7 +277,7 @@ TEST(Output, tensorComponentsAreNamedAndTheRadiusFollowsTheVolume)
     vtkDataArray* volume = pd->GetArray("volume");
     ASSERT_NE(radius, nullptr);
     ASSERT_EQ(radius->GetNumberOfComponents(), 1);
-    gpic::Particles p0;
+    gpic::Particles<2> p0;
     double t = -1;
     gpic::readParticles((dir / "0/particles.vtp").string(), p0, t);
     double largestChange = 0;

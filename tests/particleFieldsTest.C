@@ -36,14 +36,14 @@ template <class M> void fill(Eigen::MatrixBase<M>& v, std::mt19937_64& rng)
 }
 
 //- n particles carrying every group, every array of the table filled with distinct values.
-Particles everything(std::size_t n)
+Particles<2> everything(std::size_t n)
 {
-    Particles p;
+    Particles<2> p;
     for (FieldGroup g : optionalGroups) p.carry(g);
     p.resize(n);
     p.declareHistory("damage");
     std::mt19937_64 rng(7);
-    for (const ParticleField& f : particleFields()) {
+    for (const ParticleField<2>& f : particleFields<2>()) {
         if (!f.array) continue;
         std::visit([&](auto* a) { for (auto& v : *a) fill(v, rng); }, f.array(p));
     }
@@ -55,9 +55,9 @@ Particles everything(std::size_t n)
 template <class T> bool sameBits(const T& a, const T& b) { return std::memcmp(&a, &b, sizeof(T)) == 0; }
 
 //- Particle q of a equals particle r of b bitwise in every array of `role` that both carry.
-void expectSameParticle(const Particles& a, std::size_t q, const Particles& b, std::size_t r, FieldRole role)
+void expectSameParticle(const Particles<2>& a, std::size_t q, const Particles<2>& b, std::size_t r, FieldRole role)
 {
-    for (const ParticleField& f : particleFields()) {
+    for (const ParticleField<2>& f : particleFields<2>()) {
         if (!f.array || f.role != role || !a.carries(f.group)) continue;
         std::visit(
             [&](auto* x) {
@@ -70,7 +70,7 @@ void expectSameParticle(const Particles& a, std::size_t q, const Particles& b, s
     EXPECT_TRUE(sameBits(a.history("damage")[q], b.history("damage")[r]));
 }
 
-std::size_t arraySize(const ParticleField& f, const Particles& p)
+std::size_t arraySize(const ParticleField<2>& f, const Particles<2>& p)
 {
     return std::visit([](const auto* a) { return a->size(); }, fieldArray(f, p));
 }
@@ -81,10 +81,10 @@ TEST(ParticleFields, everyStateArrayOfEveryGroupRoundTripsThroughTheFileBitwise)
 {
     const fs::path dir = fs::temp_directory_path() / ("gpic-particleFields-" + std::to_string(::getpid()));
     fs::create_directories(dir);
-    const Particles p = everything(40);
+    const Particles<2> p = everything(40);
     const std::string path = (dir / "particles.vtp").string();
     writeParticles(path, p, 0.25, {"a", "b", "c"}, {"body"});
-    Particles q;
+    Particles<2> q;
     double t = 0;
     readParticles(path, q, t);
     fs::remove_all(dir);
@@ -97,11 +97,11 @@ TEST(ParticleFields, aFileOfTheCoreGroupReadsBackWithoutTheOptionalGroups)
 {
     const fs::path dir = fs::temp_directory_path() / ("gpic-particleFields-core-" + std::to_string(::getpid()));
     fs::create_directories(dir);
-    Particles p = everything(10);
+    Particles<2> p = everything(10);
     for (FieldGroup g : optionalGroups) p.drop(g);
     const std::string path = (dir / "particles.vtp").string();
     writeParticles(path, p, 0.0, {"a", "b", "c"}, {"body"});
-    Particles q = everything(3);  // replaced, not merged
+    Particles<2> q = everything(3);  // replaced, not merged
     double t = 0;
     readParticles(path, q, t);
     fs::remove_all(dir);
@@ -120,11 +120,11 @@ TEST(ParticleFields, everyCombinationOfGroupsRoundTripsThroughTheFileBitwise)
     for (unsigned mask = 0; mask < 8; ++mask) {
         for (std::size_t n : {0, 1, 9000}) {
             SCOPED_TRACE("groups " + std::to_string(mask) + ", " + std::to_string(n) + " particles");
-            Particles p = everything(n);
+            Particles<2> p = everything(n);
             for (std::size_t k = 0; k < optionalGroups.size(); ++k)
                 if (!(mask & (1u << k))) p.drop(optionalGroups[k]);
             writeParticles(path, p, 0.5, {"a", "b", "c"}, {"body"});
-            Particles q = everything(3);  // replaced, not merged
+            Particles<2> q = everything(3);  // replaced, not merged
             double t = 0;
             readParticles(path, q, t);
             for (FieldGroup g : optionalGroups) EXPECT_EQ(q.carries(g), p.carries(g)) << static_cast<int>(g);
@@ -138,16 +138,16 @@ TEST(ParticleFields, everyCombinationOfGroupsRoundTripsThroughTheFileBitwise)
 
 TEST(ParticleFields, reorderAndAppendMoveEveryArrayTogether)
 {
-    const Particles p = everything(30);
+    const Particles<2> p = everything(30);
     const std::vector<std::size_t> order{29, 3, 3, 0, 17};  // a repeat, drops the rest
-    Particles r = p;
+    Particles<2> r = p;
     r.reorder(order);
     ASSERT_EQ(r.size(), order.size());
     for (std::size_t k = 0; k < order.size(); ++k)
         for (FieldRole role : {FieldRole::state, FieldRole::scratch}) expectSameParticle(r, k, p, order[k], role);
 
     // Appended to a set without the optional groups: they are carried, zero for the old ones.
-    Particles a;
+    Particles<2> a;
     a.add(Vector2(1, 2), 3.0, 0.5, Vector2(0.1, 0.1), 0, 0);
     a.append(p);
     ASSERT_EQ(a.size(), 31u);
@@ -161,13 +161,13 @@ TEST(ParticleFields, reorderAndAppendMoveEveryArrayTogether)
 
 TEST(ParticleFields, aGroupHasArraysExactlyWhileItIsCarried)
 {
-    Particles p = everything(12);
+    Particles<2> p = everything(12);
     const std::size_t all = p.bytes();
     for (FieldGroup g : optionalGroups) {
-        Particles d = p;
+        Particles<2> d = p;
         d.drop(g);
         std::size_t heldByGroup = 0;
-        for (const ParticleField& f : particleFields()) {
+        for (const ParticleField<2>& f : particleFields<2>()) {
             if (!f.array) continue;
             EXPECT_EQ(arraySize(f, d), f.group == g ? 0u : d.size()) << (*f.name ? f.name : "an unnamed array");
             if (f.group == g) heldByGroup += arraySize(f, p);
@@ -176,7 +176,7 @@ TEST(ParticleFields, aGroupHasArraysExactlyWhileItIsCarried)
         EXPECT_LT(d.bytes(), all);  // dropping releases the memory
         d.resize(20);
         d.carry(g);  // back, zero for all
-        for (const ParticleField& f : particleFields()) {
+        for (const ParticleField<2>& f : particleFields<2>()) {
             if (f.array) {
                 EXPECT_EQ(arraySize(f, d), 20u);
             }

@@ -20,12 +20,12 @@ namespace {
 
 //- A collapsing column's crowd: the strips on the left full, those on the right sparse, one
 //  strip empty. The grid is longer in x1, so the strips are columns of cells.
-Particles unevenParticles(const Grid& grid)
+Particles<2> unevenParticles(const Grid<2>& grid)
 {
-    Particles p;
+    Particles<2> p;
     const Vector2 h = grid.cellSize();
     for (int i = 0; i < grid.nx(); ++i) {
-        if (i / ParticleStrips::width == 5) continue;  // an empty strip
+        if (i / ParticleStrips<2>::width == 5) continue;  // an empty strip
         const int perCell = i < 12 ? 6 : 1;
         for (int j = 0; j < grid.ny(); ++j)
             for (int k = 0; k < perCell; ++k)
@@ -45,9 +45,9 @@ struct Visit {
 
 TEST(ParticleStrips, eachThreadScattersOneBalancedRunOfStripsPerColour)
 {
-    const Grid grid(Vector2::Zero(), Vector2(0.1, 0.1), 40, 10);
-    const Particles p = unevenParticles(grid);
-    ParticleStrips strips(grid);
+    const Grid<2> grid(Vector2::Zero(), Vector2(0.1, 0.1), 40, 10);
+    const Particles<2> p = unevenParticles(grid);
+    ParticleStrips<2> strips(grid);
     ASSERT_EQ(strips.count(), 10);
 
     const long savedWork = minParallelWork();

@@ -22,22 +22,22 @@ namespace {
 
 constexpr double degree = M_PI / 180;
 
-std::unique_ptr<Material> material(const std::string& entries)
+std::unique_ptr<Material<2>> material(const std::string& entries)
 {
-    return Material::New(Dictionary::parse(entries, "constant/materials/soil"));
+    return Material<2>::New(Dictionary::parse(entries, "constant/materials/soil"));
 }
 
 double Nof(double phiDeg) { return (1 + std::sin(phiDeg * degree)) / (1 - std::sin(phiDeg * degree)); }
 
 //- f_s of a Drucker-Prager material at principal stresses (s1, s2, s3).
-double coneValue(const DruckerPrager& dp, double s1, double s2, double s3)
+double coneValue(const DruckerPrager<2>& dp, double s1, double s2, double s3)
 {
     const double p = (s1 + s2 + s3) / 3;
     const double q = std::sqrt(((s1 - s2) * (s1 - s2) + (s2 - s3) * (s2 - s3) + (s1 - s3) * (s1 - s3)) / 6);
     return q + dp.qPhi() * p - dp.kPhi();
 }
 
-std::unique_ptr<Material> fitted(const std::string& fit, double phi, double c)
+std::unique_ptr<Material<2>> fitted(const std::string& fit, double phi, double c)
 {
     return material("type druckerPrager; rho 2000; K 2e7; G 1e7; phi " + std::to_string(phi) +
                     "; psi 0; c " + std::to_string(c) + "; fit " + fit + ";");
@@ -60,7 +60,7 @@ TEST(MohrCoulombFit, outerConeTouchesTheCompressionMeridianAndContainsThePyramid
     for (double phi : {10.0, 30.0, 45.0})
         for (double c : {0.0, 2e4}) {
             auto m = fitted("outer", phi, c);
-            const auto& dp = dynamic_cast<const DruckerPrager&>(*m);
+            const auto& dp = dynamic_cast<const DruckerPrager<2>&>(*m);
             for (double s : {-3e5, -5e4, 0.0}) {
                 const Meridians mc = mohrCoulombMeridians(phi, c, s);
                 const double scale = std::abs(mc.compression[0]) + c;
@@ -78,7 +78,7 @@ TEST(MohrCoulombFit, innerConeTouchesTheExtensionMeridianInsideThePyramid)
     for (double phi : {10.0, 30.0, 45.0})
         for (double c : {0.0, 2e4}) {
             auto m = fitted("inner", phi, c);
-            const auto& dp = dynamic_cast<const DruckerPrager&>(*m);
+            const auto& dp = dynamic_cast<const DruckerPrager<2>&>(*m);
             for (double s : {-3e5, -5e4, 0.0}) {
                 const Meridians mc = mohrCoulombMeridians(phi, c, s);
                 const double scale = std::abs(mc.compression[0]) + c;
@@ -98,19 +98,19 @@ namespace {
 double biaxialPeak(const std::string& entries, double p0, int steps)
 {
     auto m = material(entries);
-    Particles p;
+    Particles<2> p;
     p.add(Vector2::Zero(), m->rho(), 1.0, Vector2::Constant(0.5), 0, 0);  // packed: m = rho V
     m->declareFields(p);
     p.sigma[0] = SymTensor(-p0, -p0, -p0, 0);
     const double de22 = -1e-5;
-    const auto sigma11After = [&](double de11, Particles& out) {
+    const auto sigma11After = [&](double de11, Particles<2>& out) {
         out = p;
         out.dEps[0] = SymTensor(de11, de22, 0, 0);
         out.dOmega[0] = 0;
         m->updateStress(out, {0, 1, 0}, 1e-6);
         return out.sigma[0][XX] + p0;
     };
-    Particles next;
+    Particles<2> next;
     for (int k = 0; k < steps; ++k) {
         double x0 = 0, x1 = 1e-6;
         double r0 = sigma11After(x0, next), r1 = sigma11After(x1, next);

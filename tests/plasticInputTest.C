@@ -19,10 +19,10 @@ const char* const file = "constant/materials";
 
 //- Parse `entries` as the body of `sand { ... }` in constant/materials (`sand` on line 2,
 //  the entries from line 4; a missing keyword is reported at line 2) and build it.
-std::unique_ptr<Material> build(const std::string& entries)
+std::unique_ptr<Material<2>> build(const std::string& entries)
 {
     const Dictionary all = Dictionary::parse("// materials\nsand\n{\n" + entries + "\n}\n", file);
-    return Material::New(all.subDict("sand"));
+    return Material<2>::New(all.subDict("sand"));
 }
 
 //- Building must fail with an InputError on `line` that mentions each of `words`.
@@ -107,7 +107,7 @@ TEST(PlasticInput, druckerPragerReportsItsFitOnOneLine)
     EXPECT_NE(out.find("druckerPrager sand: outer fit to Mohr-Coulomb (phi 30, psi 0, c 0): "
                        "qPhi 0.6928 kPhi 0 qPsi 0\n"),
               std::string::npos) << out;
-    const auto& dp = dynamic_cast<const DruckerPrager&>(*m);
+    const auto& dp = dynamic_cast<const DruckerPrager<2>&>(*m);
     EXPECT_NEAR(dp.qPhi(), 6 * 0.5 / (std::sqrt(3.0) * 2.5), 1e-15);
     EXPECT_EQ(dp.sigmaT(), 0.0);  // the apex kPhi/qPhi
 }

@@ -25,16 +25,16 @@ namespace {
 
 constexpr double degree = M_PI / 180;
 
-std::unique_ptr<Material> material(const std::string& entries)
+std::unique_ptr<Material<2>> material(const std::string& entries)
 {
     Dictionary d = Dictionary::parse(entries, "constant/materials/soil");
-    return Material::New(d);
+    return Material<2>::New(d);
 }
 
 //- One material point driven directly through updateStress.
 struct Point {
-    std::unique_ptr<Material> m;
-    Particles p;
+    std::unique_ptr<Material<2>> m;
+    Particles<2> p;
 
     explicit Point(const std::string& entries) : m(material(entries))
     {

@@ -10,8 +10,8 @@ using namespace gpic;
 
 TEST(PluginRegistry, aLibraryRegisteringATakenNameIsAnErrorNamingBothLibraries)
 {
-    ASSERT_TRUE(Registry<Material>::table().count("linearElastic"));
-    const std::string builtIn = Registry<Material>::table().at("linearElastic").library;
+    ASSERT_TRUE(Registry<Material<2>>::table().count("linearElastic"));
+    const std::string builtIn = Registry<Material<2>>::table().at("linearElastic").library;
     EXPECT_NE(builtIn.find("libmaterials"), std::string::npos) << builtIn;
     try {
         Plugins::open(GPIC_DUPLICATE_PLUGIN, "system/controlDict", 7);
@@ -24,5 +24,5 @@ TEST(PluginRegistry, aLibraryRegisteringATakenNameIsAnErrorNamingBothLibraries)
         EXPECT_NE(what.find("is already registered by " + builtIn), std::string::npos) << what;
     }
     // The project's type stays the one selected.
-    EXPECT_EQ(Registry<Material>::table().at("linearElastic").library, builtIn);
+    EXPECT_EQ(Registry<Material<2>>::table().at("linearElastic").library, builtIn);
 }

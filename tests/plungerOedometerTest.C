@@ -43,7 +43,7 @@ std::vector<Sample> runOedometer(const ScratchDir& scratch, const std::string& s
     std::vector<Sample> samples;
     for (const auto& [t, name] : listTimeDirectories(dir.string())) {
         if (t == 0) continue;
-        Particles p;
+        Particles<2> p;
         double time = 0;
         readParticles((dir / name / "particles.vtp").string(), p, time);
         double e = 0, s = 0;
@@ -118,7 +118,7 @@ TEST(PlungerOedometer, anElasticSampleFollowsTheUniaxialStrainStressAndLoadsTheP
 
 TEST(PlungerOedometer, aMohrCoulombSampleFollowsTheEdgeOfTheYieldSurface)
 {
-    if (!Registry<Material>::table().count("mohrCoulomb")) GTEST_SKIP() << "no mohrCoulomb material yet";
+    if (!Registry<Material<2>>::table().count("mohrCoulomb")) GTEST_SKIP() << "no mohrCoulomb material yet";
     // Table 4.4: c = 1 MPa, phi = 10 deg, sigma_t = 5.67 MPa; psi = 10 and 0 deg. Reference
     // values (seed-cases.md): -sigma22 = 2.990 MPa at yield (-eps22 = 0.006408) and 10.00
     // (psi 10) / 8.87 (psi 0) MPa at -eps22 = 0.03.

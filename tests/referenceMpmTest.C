@@ -110,7 +110,7 @@ void compareThroughTheDiskImpact(double flipFraction)
     gpic::Simulation& simulation = *simulationPtr;
 
     // The reference starts from the same particles.
-    const gpic::Particles& p0 = simulation.solver().particles();
+    const gpic::Particles<2>& p0 = simulation.solver().particles();
     ReferenceMpm ref{25, 25, 0.04, 1000, 0.3, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, flipFraction};
     std::map<int, std::size_t> refIndex;  // the engine sorts its particles by cell: match by id
     for (std::size_t q = 0; q < p0.size(); ++q) {
@@ -124,7 +124,7 @@ void compareThroughTheDiskImpact(double flipFraction)
     for (int k = 0; k < 1700; ++k) ref.step(1e-3);
 
     // Same algorithm, different summation order: agreement to round-off growth.
-    const gpic::Particles& p = simulation.solver().particles();
+    const gpic::Particles<2>& p = simulation.solver().particles();
     double dx = 0, dv = 0, ds = 0, smax = 0;
     for (std::size_t q = 0; q < p.size(); ++q) {
         const std::size_t r = refIndex.at(p.id[q]);

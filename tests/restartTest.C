@@ -71,9 +71,9 @@ protected:
     }
 };
 
-gpic::Particles read(const fs::path& file, double& time)
+gpic::Particles<2> read(const fs::path& file, double& time)
 {
-    gpic::Particles p;
+    gpic::Particles<2> p;
     gpic::readParticles(file.string(), p, time);
     return p;
 }
@@ -94,7 +94,7 @@ void expectSameParticles(const fs::path& fileA, const fs::path& fileB)
 {
     SCOPED_TRACE(fileA.string() + " vs " + fileB.string());
     double tA = 0, tB = 0;
-    const gpic::Particles a = read(fileA, tA), b = read(fileB, tB);
+    const gpic::Particles<2> a = read(fileA, tA), b = read(fileB, tB);
     EXPECT_EQ(std::memcmp(&tA, &tB, sizeof tA), 0) << tA << " vs " << tB;
     ASSERT_EQ(a.size(), b.size());
     ASSERT_GT(a.size(), 0u);

@@ -15,7 +15,7 @@ TEST(RigidBody, aPistonCompressesABlockToTheUniaxialStrainStress)
     ScratchDir scratch("piston");
     const fs::path dir = piston::writeCase(scratch);
     const auto simulation = runAndKeep(dir);
-    const gpic::Particles& p = simulation->solver().particles();
+    const gpic::Particles<2>& p = simulation->solver().particles();
 
     // delta = 0.02 m keeps the piston's particles in their first cell, so the block's
     // driven face stays the node line x = L.

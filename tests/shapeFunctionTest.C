@@ -13,14 +13,14 @@ using namespace gpic;
 
 namespace {
 
-ShapeWeights weightsAt(const std::string& type, const Grid& grid, const std::vector<Vector2>& xs)
+ShapeWeights<2> weightsAt(const std::string& type, const Grid<2>& grid, const std::vector<Vector2>& xs)
 {
     Dictionary dict;
-    auto shape = Registry<ShapeFunction>::select(type, dict, dict, "shapeFunction");
-    Particles p;
+    auto shape = Registry<ShapeFunction<2>>::select(type, dict, dict, "shapeFunction");
+    Particles<2> p;
     const Vector2 half = 0.25 * grid.cellSize();  // 2 x 2 particles per cell
     for (const auto& x : xs) p.add(x, 1.0, 1.0, half, 0, 0);
-    ShapeWeights w;
+    ShapeWeights<2> w;
     shape->evaluate(grid, p, w);
     return w;
 }
@@ -31,13 +31,13 @@ class ShapeFunctionProperties : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(ShapeFunctionProperties, partitionOfUnityAndLinearReproduction)
 {
-    const Grid grid(Vector2(-1, 2), Vector2(0.5, 0.25), 8, 8);
+    const Grid<2> grid(Vector2(-1, 2), Vector2(0.5, 0.25), 8, 8);
     std::mt19937 random(7);
     // Away from the edges by a particle half-size, where the support is complete.
     std::uniform_real_distribution<double> ux(-1 + 0.5, 3 - 0.5), uy(2 + 0.25, 4 - 0.25);
     std::vector<Vector2> xs;
     for (int k = 0; k < 200; ++k) xs.emplace_back(ux(random), uy(random));
-    const ShapeWeights w = weightsAt(GetParam(), grid, xs);
+    const ShapeWeights<2> w = weightsAt(GetParam(), grid, xs);
     for (std::size_t q = 0; q < xs.size(); ++q) {
         double sumN = 0;
         Vector2 sumGrad = Vector2::Zero(), reproduced = Vector2::Zero();
@@ -62,18 +62,18 @@ INSTANTIATE_TEST_SUITE_P(AllShapes, ShapeFunctionProperties, ::testing::Values("
 
 TEST(ShapeFunctions, uGimpGradientIsContinuousAcrossACellFaceWhereBilinearJumps)
 {
-    const Grid grid(Vector2(0, 0), Vector2(1, 1), 4, 4);
+    const Grid<2> grid(Vector2(0, 0), Vector2(1, 1), 4, 4);
     const double eps = 1e-9;
     const std::vector<Vector2> xs{{2 - eps, 1.5}, {2 + eps, 1.5}};
-    auto gradOfNode = [&](const ShapeWeights& w, int q, int node) {
+    auto gradOfNode = [&](const ShapeWeights<2>& w, int q, int node) {
         for (int a = 0; a < w.stride; ++a)
             if (w.node[q * w.stride + a] == node) return w.dN[q * w.stride + a].x();
         return 0.0;
     };
     const int node = grid.node(2, 1);  // the node on the face x = 2
-    const ShapeWeights gimp = weightsAt("uGIMP", grid, xs);
+    const ShapeWeights<2> gimp = weightsAt("uGIMP", grid, xs);
     EXPECT_NEAR(gradOfNode(gimp, 0, node), gradOfNode(gimp, 1, node), 1e-6);
-    const ShapeWeights bilinear = weightsAt("bilinear", grid, xs);
+    const ShapeWeights<2> bilinear = weightsAt("bilinear", grid, xs);
     EXPECT_NEAR(gradOfNode(bilinear, 0, node) - gradOfNode(bilinear, 1, node), 0.5 * 2 / 1.0, 1e-6);
 }
 
@@ -85,7 +85,7 @@ TEST(ShapeFunctions, uGimpGradientIsContinuousAcrossACellFaceWhereBilinearJumps)
 TEST(ShapeFunctions, quadraticBSplineSumsToOneUpToTheSidesAndIsExactInside)
 {
     const Vector2 h(0.5, 0.25);
-    const Grid grid(Vector2(-1, 2), h, 8, 10);
+    const Grid<2> grid(Vector2(-1, 2), h, 8, 10);
     std::mt19937 random(11);
     std::uniform_real_distribution<double> ux(-1, 3), uy(2, 4.5);
     std::vector<Vector2> xs;
@@ -96,10 +96,10 @@ TEST(ShapeFunctions, quadraticBSplineSumsToOneUpToTheSidesAndIsExactInside)
         xs.emplace_back(0.0, 2 + s * h.y());
         xs.emplace_back(0.0, 4.5 - s * h.y());
     }
-    const ShapeWeights w = weightsAt("quadraticBSpline", grid, xs);
+    const ShapeWeights<2> w = weightsAt("quadraticBSpline", grid, xs);
     ASSERT_EQ(w.stride, 9);
     Dictionary none;
-    const auto shape = Registry<ShapeFunction>::select("quadraticBSpline", none, none, "shapeFunction");
+    const auto shape = Registry<ShapeFunction<2>>::select("quadraticBSpline", none, none, "shapeFunction");
     int inside = 0;
     for (std::size_t q = 0; q < xs.size(); ++q) {
         double sumN = 0;
@@ -135,9 +135,9 @@ TEST(ShapeFunctions, quadraticBSplineSumsToOneUpToTheSidesAndIsExactInside)
 
 TEST(ShapeFunctions, quadraticBSplineHasTheStandardValuesInsideAndOnlyTheSideNodeOnASide)
 {
-    const Grid grid(Vector2(0, 0), Vector2(1, 1), 8, 8);
+    const Grid<2> grid(Vector2(0, 0), Vector2(1, 1), 8, 8);
     // On a node inside: 3/4 there, 1/8 at both neighbours (per axis).
-    const ShapeWeights w = weightsAt("quadraticBSpline", grid, {{4.0, 4.0}, {0.0, 4.0}, {8.0, 0.0}});
+    const ShapeWeights<2> w = weightsAt("quadraticBSpline", grid, {{4.0, 4.0}, {0.0, 4.0}, {8.0, 0.0}});
     for (int a = 0; a < 9; ++a) {
         const Vector2 xi = grid.nodePosition(w.node[a]);
         const double wx = xi.x() == 4.0 ? 0.75 : 0.125, wy = xi.y() == 4.0 ? 0.75 : 0.125;
@@ -157,11 +157,11 @@ TEST(ShapeFunctions, quadraticBSplineHasTheStandardValuesInsideAndOnlyTheSideNod
 
 TEST(ShapeFunctions, quadraticBSplineGradientIsContinuousAcrossFacesAndKnots)
 {
-    const Grid grid(Vector2(0, 0), Vector2(1, 1), 8, 8);
+    const Grid<2> grid(Vector2(0, 0), Vector2(1, 1), 8, 8);
     const double eps = 1e-9;
     // A cell face (x = 3), a knot between cells (x = 3.5) and the first knots off a side (1.5, 2.5).
     for (double x : {3.0, 3.5, 1.5, 2.5, 0.5}) {
-        const ShapeWeights w = weightsAt("quadraticBSpline", grid, {{x - eps, 4.5}, {x + eps, 4.5}});
+        const ShapeWeights<2> w = weightsAt("quadraticBSpline", grid, {{x - eps, 4.5}, {x + eps, 4.5}});
         for (int n = 0; n <= 8; ++n) {
             const int node = grid.node(n, 4);
             double g[2] = {0, 0};
@@ -175,8 +175,8 @@ TEST(ShapeFunctions, quadraticBSplineGradientIsContinuousAcrossFacesAndKnots)
 
 TEST(ShapeFunctions, quadraticBSplineIsLinearAcrossAnAxisOfOneCell)
 {
-    const Grid grid(Vector2(0, 0), Vector2(1, 0.5), 6, 1);  // a bar one cell thick
-    const ShapeWeights w = weightsAt("quadraticBSpline", grid, {{2.3, 0.1}, {5.9, 0.45}});
+    const Grid<2> grid(Vector2(0, 0), Vector2(1, 0.5), 6, 1);  // a bar one cell thick
+    const ShapeWeights<2> w = weightsAt("quadraticBSpline", grid, {{2.3, 0.1}, {5.9, 0.45}});
     for (int q = 0; q < 2; ++q) {
         double sumN = 0, sumY = 0;
         for (int a = 0; a < 9; ++a) {
@@ -197,12 +197,12 @@ TEST(ShapeFunctions, quadraticBSplineIsLinearAcrossAnAxisOfOneCell)
 // is cut at r = 0. Far from the axis the weights tend to plane strain's.
 TEST(ShapeFunctions, axisymmetricUGimpAveragesOverTheRing)
 {
-    Grid grid(Vector2(0, 0), Vector2(0.1, 0.1), 10, 10);
+    Grid<2> grid(Vector2(0, 0), Vector2(0.1, 0.1), 10, 10);
     grid.setAxisymmetric(true);
     const double l = 0.025;  // 2 x 2 particles per cell
     // Inside, next to the axis (the domain touches it), across a face, and across the axis.
     const std::vector<Vector2> xs{{0.437, 0.52}, {0.025, 0.31}, {0.098, 0.66}, {0.01, 0.4}};
-    const ShapeWeights w = weightsAt("uGIMP", grid, xs);
+    const ShapeWeights<2> w = weightsAt("uGIMP", grid, xs);
     ASSERT_EQ(w.hoop.size(), w.N.size());
     for (std::size_t q = 0; q < xs.size(); ++q) {
         const double r1 = std::max(xs[q].x() - l, 0.0), r2 = xs[q].x() + l;
@@ -231,11 +231,11 @@ TEST(ShapeFunctions, axisymmetricUGimpAveragesOverTheRing)
         EXPECT_NEAR(sumGrad.x(), 0.0, 1e-10) << q;
     }
     // The same particle 300 cells out: N and r_p T_i within 1e-4 of plane strain's N.
-    Grid far(Vector2(0, 0), Vector2(0.1, 0.1), 400, 10);
+    Grid<2> far(Vector2(0, 0), Vector2(0.1, 0.1), 400, 10);
     far.setAxisymmetric(true);
-    Grid flat(Vector2(0, 0), Vector2(0.1, 0.1), 400, 10);
-    const ShapeWeights ringW = weightsAt("uGIMP", far, {{30.437, 0.52}});
-    const ShapeWeights flatW = weightsAt("uGIMP", flat, {{30.437, 0.52}});
+    Grid<2> flat(Vector2(0, 0), Vector2(0.1, 0.1), 400, 10);
+    const ShapeWeights<2> ringW = weightsAt("uGIMP", far, {{30.437, 0.52}});
+    const ShapeWeights<2> flatW = weightsAt("uGIMP", flat, {{30.437, 0.52}});
     for (int a = 0; a < ringW.stride; ++a) {
         EXPECT_NEAR(ringW.N[a], flatW.N[a], 1e-4);
         EXPECT_NEAR(ringW.hoop[a] * 30.437, flatW.N[a], 1e-4);

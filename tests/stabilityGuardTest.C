@@ -27,15 +27,15 @@ namespace {
 
 //- Linear elastic, but particle `nanParticle` gets a NaN stress in the update that takes its
 //  age (a history variable) past `nanAfter` seconds: a material bug at a known step.
-class NanAfter : public LinearElastic {
+class NanAfter : public LinearElastic<2> {
 public:
     explicit NanAfter(const Dictionary& dict)
-        : LinearElastic(dict), particle_(dict.get<int>("nanParticle")), after_(dict.get<double>("nanAfter"))
+        : LinearElastic<2>(dict), particle_(dict.get<int>("nanParticle")), after_(dict.get<double>("nanAfter"))
     {}
     std::vector<std::string> historyNames() const override { return {"age"}; }
-    void updateStress(Particles& p, const ParticleBlock& block, double dt) const override
+    void updateStress(Particles<2>& p, const ParticleBlock& block, double dt) const override
     {
-        LinearElastic::updateStress(p, block, dt);
+        LinearElastic<2>::updateStress(p, block, dt);
         auto& age = p.history("age");
         for (std::size_t i = block.begin; i < block.end; ++i) {
             age[i] += dt;
@@ -47,21 +47,21 @@ private:
     int particle_;
     double after_;
 };
-GPIC_REGISTER(Material, NanAfter, "testNanAfter")
+GPIC_REGISTER(Material<2>, NanAfter, "testNanAfter")
 
 //- Linear elastic, but it reports a wave speed `waveSpeedFactor` times the true one: the
 //  automatic step is then too long by 1 / waveSpeedFactor.
-class SlowWave : public LinearElastic {
+class SlowWave : public LinearElastic<2> {
 public:
     explicit SlowWave(const Dictionary& dict)
-        : LinearElastic(dict), factor_(dict.get<double>("waveSpeedFactor"))
+        : LinearElastic<2>(dict), factor_(dict.get<double>("waveSpeedFactor"))
     {}
-    double waveSpeed() const override { return factor_ * LinearElastic::waveSpeed(); }
+    double waveSpeed() const override { return factor_ * LinearElastic<2>::waveSpeed(); }
 
 private:
     double factor_;
 };
-GPIC_REGISTER(Material, SlowWave, "testSlowWave")
+GPIC_REGISTER(Material<2>, SlowWave, "testSlowWave")
 
 // ---- The scene -----------------------------------------------------------------------------
 
@@ -168,7 +168,7 @@ Diagnosis runScene(const fs::path& dir, std::unique_ptr<Simulation>* keep = null
 bool finite(const Vector2& v) { return std::isfinite(v.x()) && std::isfinite(v.y()); }
 
 //- Every field finite and every volume positive.
-::testing::AssertionResult allFinite(const Particles& p)
+::testing::AssertionResult allFinite(const Particles<2>& p)
 {
     for (std::size_t q = 0; q < p.size(); ++q)
         if (!finite(p.x[q]) || !finite(p.v[q]) || !p.sigma[q].allFinite() || !(p.V[q] > 0))
@@ -177,7 +177,7 @@ bool finite(const Vector2& v) { return std::isfinite(v.x()) && std::isfinite(v.y
 }
 
 //- Energy of the vibration: kinetic energy about the centre of mass plus stress work [J/m].
-double vibrationEnergy(const Particles& p)
+double vibrationEnergy(const Particles<2>& p)
 {
     double M = 0, K = 0, W = 0;
     Vector2 P = Vector2::Zero();
@@ -190,9 +190,9 @@ double vibrationEnergy(const Particles& p)
     return K - 0.5 * P.squaredNorm() / M + W;
 }
 
-Particles readState(const fs::path& timeDir)
+Particles<2> readState(const fs::path& timeDir)
 {
-    Particles p;
+    Particles<2> p;
     double t = 0;
     readParticles((timeDir / "particles.vtp").string(), p, t);
     return p;
@@ -246,7 +246,7 @@ void runBlock(double E, double v0, const std::string& scheme, bool strict, int& 
             return;
         }
         ASSERT_TRUE(d.line.empty()) << d.line;
-        const Particles& p = sim->solver().particles();
+        const Particles<2>& p = sim->solver().particles();
         EXPECT_TRUE(allFinite(p));
         for (const auto& [t, name] : listTimeDirectories(dir.string()))
             EXPECT_LT(vibrationEnergy(readState(dir / name)) / E0, 1.25) << "t = " << t;
@@ -273,7 +273,7 @@ void runBlock(double E, double v0, const std::string& scheme, bool strict, int& 
     // It left after flying the gap, within two steps and the mode's stretch.
     EXPECT_NEAR(d.time, (gap + h / 4) / v0, 2 * 0.5 * h / (c + v0) + 0.01 * gap / v0) << d.line;
     ASSERT_TRUE(fs::exists(d.goodDir / "particles.vtp")) << d.line;
-    const Particles good = readState(d.goodDir);
+    const Particles<2> good = readState(d.goodDir);
     EXPECT_TRUE(allFinite(good));
     EXPECT_LT(d.goodTime, d.time);
     for (const auto& x : good.x) EXPECT_LE(x.x(), 1.0);
@@ -331,7 +331,7 @@ TEST(StabilityGuard, fixedStepStopsWithTheNeededStepBeforeTheBlockGoesUnstable)
     EXPECT_LT(d.needed, dt);
     // The last good state is the state of that step, on disk, finite, falling at g t.
     EXPECT_EQ(d.goodStep, n);
-    const Particles good = readState(d.goodDir);
+    const Particles<2> good = readState(d.goodDir);
     EXPECT_TRUE(allFinite(good));
     for (const auto& v : good.v) EXPECT_NEAR(v.y(), -g * n * dt, 1e-9);
 }
@@ -369,7 +369,7 @@ TEST(StabilityGuard, nanStressFromAMaterialIsCaughtAtItsStepNamingParticleAndMat
         EXPECT_EQ(d.material, "faulty");
         EXPECT_EQ(d.step, 23) << d.line;
         EXPECT_EQ(d.goodStep, 20) << d.line;
-        const Particles good = readState(d.goodDir);
+        const Particles<2> good = readState(d.goodDir);
         EXPECT_TRUE(allFinite(good));
         EXPECT_NEAR(d.goodTime, 20 * dt, 1e-12);
         // The state of step 20 came from the guard's snapshot file, which goes with the run.
@@ -413,7 +413,7 @@ TEST(StabilityGuard, anUnstableAutomaticStepStopsOnCreatedEnergyBeforeAnyNaN)
     EXPECT_EQ(d.line.find("micro-rotation"), std::string::npos) << d.line;  // a nonpolar material
     EXPECT_EQ(d.line.find("nan"), std::string::npos) << d.line;
     EXPECT_EQ(d.line.find("inf"), std::string::npos) << d.line;
-    const Particles good = readState(d.goodDir);
+    const Particles<2> good = readState(d.goodDir);
     EXPECT_TRUE(allFinite(good));
 }
 

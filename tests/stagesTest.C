@@ -40,9 +40,9 @@ void writeColumn(const fs::path& dir, double H, const std::string& stages, const
                                                  initialStress + " }\n");
 }
 
-gpic::Particles readState(const fs::path& dir, const std::string& name)
+gpic::Particles<2> readState(const fs::path& dir, const std::string& name)
 {
-    gpic::Particles p;
+    gpic::Particles<2> p;
     double t = 0;
     gpic::readParticles((dir / name / "particles.vtp").string(), p, t);
     return p;
@@ -50,7 +50,7 @@ gpic::Particles readState(const fs::path& dir, const std::string& name)
 
 //- Largest |sigma22 + rho g (H - x2)| and |sigma11 - K0 sigma22| over the particles below
 //  `depthFrom` from the top, as fractions of rho g H.
-std::pair<double, double> stressErrors(const gpic::Particles& p, double H, double depthFrom = 0)
+std::pair<double, double> stressErrors(const gpic::Particles<2>& p, double H, double depthFrom = 0)
 {
     double e22 = 0, e11 = 0;
     for (std::size_t q = 0; q < p.size(); ++q) {
@@ -95,7 +95,7 @@ TEST(Stages, geostaticFillLayerByLayerGivesTheConfinedElasticState)
     EXPECT_FALSE(fs::exists(dir / last / "dormant.vtp")) << "every particle is in after the fill";
     EXPECT_NE(readText(dir / last / "uniform/stage").find("stage     none;"), std::string::npos);
 
-    const gpic::Particles p = readState(dir, last);
+    const gpic::Particles<2> p = readState(dir, last);
     ASSERT_EQ(p.size(), 160u);
     double vmax = 0;
     for (const auto& v : p.v) vmax = std::max(vmax, v.norm());
@@ -163,7 +163,7 @@ TEST(Stages, aFillTurnedOnTheGridEntersWithTheStressOfTheTurnedGravity)
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_NE(r.out.find("Stage fill: layer 1, 159 particles up to height = "), std::string::npos) << r.out;
 
-    const gpic::Particles p = readState(dir, gpic::latestTime(dir.string()));
+    const gpic::Particles<2> p = readState(dir, gpic::latestTime(dir.string()));
     double top = -1e9;
     for (std::size_t q = 0; q < p.size(); ++q)
         if (p.body[q] == 0)
@@ -200,7 +200,7 @@ TEST(Stages, aFillTurnedOnTheGridSettlesToTheConfinedStateInItsOwnAxes)
     ASSERT_EQ(r.exitCode, 0) << r.err;
     ASSERT_NE(r.out.find("Stage fill ended: equilibrium"), std::string::npos) << r.out;
 
-    const gpic::Particles p = readState(dir, gpic::latestTime(dir.string()));
+    const gpic::Particles<2> p = readState(dir, gpic::latestTime(dir.string()));
     const int nBands = 10;
     std::vector<double> eNN(nBands), eSS(nBands), eSN(nBands);
     std::vector<int> count(nBands);
@@ -261,7 +261,7 @@ TEST(Stages, excavationLeavesTheStressOfTheNewHeight)
     ASSERT_EQ(records.size(), 1u);
     EXPECT_NE(records[0].reason.find("equilibrium"), std::string::npos) << records[0].reason;
     EXPECT_NE(records[0].reason.find("after 3 layers (240 kg/m dug)"), std::string::npos) << records[0].reason;
-    const gpic::Particles& p = simulation->solver().particles();
+    const gpic::Particles<2>& p = simulation->solver().particles();
     ASSERT_EQ(p.size(), 112u);
     for (const auto& x : p.x0) ASSERT_LT(x.y(), 0.7);
     const double H = 0.7;
@@ -303,7 +303,7 @@ TEST(Stages, aClosedGateHoldsTheBlockAndTheOpenedGateLetsItOut)
     {
         const auto closed = runAndKeep(dir);
         EXPECT_EQ(closed->solver().removedMass(), 0.0);
-        const gpic::Particles& p = closed->solver().particles();
+        const gpic::Particles<2>& p = closed->solver().particles();
         ASSERT_EQ(p.size(), 48u);
         double drop = 0;
         for (std::size_t q = 0; q < p.size(); ++q) drop = std::max(drop, p.x0[q].y() - p.x[q].y());
@@ -362,7 +362,7 @@ TEST(Stages, endConditionsByTimeAndByTheToolsDisplacement)
     // at its start, then one every snapshotInterval steps).
     const long interval = simulation->guard().snapshotInterval();
     EXPECT_GT(simulation->guard().snapshots(), 1 + (records[1].endStep - records[1].startStep) / interval);
-    const gpic::Particles& p = simulation->solver().particles();
+    const gpic::Particles<2>& p = simulation->solver().particles();
     for (std::size_t q = 0; q < p.size(); ++q)
         if (p.body[q] == 1) {
             EXPECT_NEAR(p.x[q].x() - p.x0[q].x(), 0.2, 0.5e-3 + 1e-9);

@@ -21,8 +21,8 @@ namespace {
 
 //- A 1 x 0.5 m block of 2 x 2 particles per 0.1 m cell (body "block") in a 1.5 x 1 m grid.
 struct Block {
-    Grid grid{Vector2(0, 0), Vector2(0.1, 0.1), 15, 10};
-    Particles p;
+    Grid<2> grid{Vector2(0, 0), Vector2(0.1, 0.1), 15, 10};
+    Particles<2> p;
     std::vector<std::string> bodies{"block"};
 
     Block()
@@ -34,15 +34,15 @@ struct Block {
 };
 
 //- The load of constant/loads sub-dictionary `name` in `text`, initialised on `block`.
-std::unique_ptr<ParticleLoad> load(const std::string& text, const Block& block)
+std::unique_ptr<ParticleLoad<2>> load(const std::string& text, const Block& block)
 {
     const Dictionary dict = Dictionary::parse(text, "constant/loads");
-    auto l = ParticleLoad::New(dict.subDict("pad"));
+    auto l = ParticleLoad<2>::New(dict.subDict("pad"));
     l->initialise(block.p, block.grid, block.bodies);
     return l;
 }
 
-Vector2 totalForce(const ParticleLoad& l, const Particles& p, double t, std::size_t* loaded = nullptr)
+Vector2 totalForce(const ParticleLoad<2>& l, const Particles<2>& p, double t, std::size_t* loaded = nullptr)
 {
     std::vector<Vector2> f(p.size(), Vector2::Zero());
     l.addForces(t, p, f);
@@ -119,10 +119,10 @@ TEST(SurfacePressure, segmentsOffTheSurfaceAreRefused)
 struct QuarterRing : Block {
     QuarterRing(bool axisymmetric)
     {
-        grid = Grid(Vector2(0, 0), Vector2(0.01, 0.01), 25, 25);
+        grid = Grid<2>(Vector2(0, 0), Vector2(0.01, 0.01), 25, 25);
         grid.setAxisymmetric(axisymmetric);
         bodies = {"shell"};
-        p = Particles();
+        p = Particles<2>();
         for (int j = 0; j < 50; ++j)
             for (int i = 0; i < 50; ++i) {
                 const Vector2 x(0.0025 + 0.005 * i, 0.0025 + 0.005 * j);
@@ -199,7 +199,7 @@ TEST(SurfacePressure, loadedColumnSettlesToTheOedometricState)
     std::ofstream(dir / "constant/loads")
         << "top { type surfacePressure; body column; from (0 2); to (1 2); pressure " << p << "; rampTime 0.1; }\n";
     const auto simulation = runAndKeep(dir);
-    const Particles& s = simulation->solver().particles();
+    const Particles<2>& s = simulation->solver().particles();
 
     // The particles carry the load at their centres, which the shape functions share between
     // the two node rows of the top cell: the surface row takes N = (y_q - 1.9)/0.1 of it

@@ -53,7 +53,7 @@ void expectBitwise(const std::vector<T>& a, const std::vector<T>& b, const char*
 }
 
 //- Run the prepared case (copied) at `threads` threads; its final particles.
-Particles runWith(const fs::path& prepared, int threads, const std::string& tag)
+Particles<2> runWith(const fs::path& prepared, int threads, const std::string& tag)
 {
     const fs::path dir = prepared.parent_path() / (tag + std::to_string(threads));
     fs::remove_all(dir);
@@ -70,7 +70,7 @@ Particles runWith(const fs::path& prepared, int threads, const std::string& tag)
 
 void expectSameAtOneAndTwoThreads(const fs::path& prepared, std::size_t* size = nullptr)
 {
-    const Particles one = runWith(prepared, 1, "threads"), two = runWith(prepared, 2, "threads");
+    const Particles<2> one = runWith(prepared, 1, "threads"), two = runWith(prepared, 2, "threads");
     ASSERT_GT(one.size(), 0u);
     if (size) *size = one.size();
     expectBitwise(one.id, two.id, "id");

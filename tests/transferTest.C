@@ -39,9 +39,9 @@ struct Spin {
 
 //- Angular momentum the state carries to the grid: sum m x x v, plus with APIC the affine
 //  part m (C_p D_p)_21 - m (C_p D_p)_12 with D_p = sum_i N_ip (x_i - x_p)(x_i - x_p)^T.
-double angularMomentum(const Particles& p, const Grid& grid, const ShapeFunction& shape)
+double angularMomentum(const Particles<2>& p, const Grid<2>& grid, const ShapeFunction<2>& shape)
 {
-    ShapeWeights w;
+    ShapeWeights<2> w;
     shape.evaluate(grid, p, w);
     double L = 0;
     for (std::size_t q = 0; q < p.size(); ++q) {
@@ -74,7 +74,7 @@ Spin spinDisk(const std::string& transfer, const std::string& shape, int steps =
     writeDictionary(dir / "system/controlDict", "deltaT " + std::to_string(dt) + "; endTime " +
                                                     std::to_string(steps * dt) +
                                                     "; writeControl timeStep; writeInterval 100;\n");
-    initialiseAndEdit(dir, [](Particles& p) {  // a rigid rotation about the centre
+    initialiseAndEdit(dir, [](Particles<2>& p) {  // a rigid rotation about the centre
         for (std::size_t q = 0; q < p.size(); ++q) {
             const Vector2 r = p.x[q] - centre;
             p.v[q] = omega0 * Vector2(-r.y(), r.x());
@@ -85,11 +85,11 @@ Spin spinDisk(const std::string& transfer, const std::string& shape, int steps =
     options.quiet = true;
     Simulation(options).run();
 
-    const Grid grid(Dictionary::readFile((dir / "constant/grid").string()));
-    const auto shapeFunction = Registry<ShapeFunction>::select(shape, Dictionary{}, Dictionary{});
+    const Grid<2> grid(Dictionary::readFile((dir / "constant/grid").string()));
+    const auto shapeFunction = Registry<ShapeFunction<2>>::select(shape, Dictionary{}, Dictionary{});
     Spin s;
     for (const auto& [time, name] : listTimeDirectories(dir.string())) {
-        Particles state;
+        Particles<2> state;
         double tt = 0;
         readParticles((dir / name / "particles.vtp").string(), state, tt);
         s.L.push_back(angularMomentum(state, grid, *shapeFunction));
@@ -238,7 +238,7 @@ TEST(Transfer, apicWithContactAndStagesIsTheSameAtOneAndTwoThreads)
     ScratchDir scratch("apicThreads");
     bladeCase(scratch.path() / "one");
     bladeCase(scratch.path() / "two");
-    const Particles one = runAtThreads(scratch.path() / "one", 1), two = runAtThreads(scratch.path() / "two", 2);
+    const Particles<2> one = runAtThreads(scratch.path() / "one", 1), two = runAtThreads(scratch.path() / "two", 2);
     ASSERT_TRUE(one.carries(FieldGroup::affine));
     ASSERT_GT(one.size(), 100u);
     expectBitwise(one.x, two.x, "x");
@@ -310,7 +310,7 @@ double restOnTheFloor(const std::string& floor, const std::string& shape, const 
                     "particlesPerCell 2; velocity (0.002 0); }\n");
     writeDictionary(dir / "constant/g", "value (0 -9.81);\n");
     auto simulation = runAndKeep(dir);
-    const Particles& p = simulation->solver().particles();
+    const Particles<2>& p = simulation->solver().particles();
     double lowest = 1e9;
     for (const auto& x : p.x) lowest = std::min(lowest, x.y());
     return lowest;

@@ -17,22 +17,22 @@ namespace {
 
 //- A body force b per unit mass on every particle, as gravity is applied (eq. 2.3.9); on
 //  only while `force` is set, so the other scenes of the test programme never assemble it.
-class BodyForcePass : public EnginePass {
+class BodyForcePass : public EnginePass<2> {
 public:
     static inline const Vector2* force = nullptr;
     static inline double stepLimit = 1e300;
     static inline int calls = 0;
 
-    explicit BodyForcePass(PassScene&) {}
-    static bool needed(const PassScene&) { return force != nullptr; }
+    explicit BodyForcePass(PassScene<2>&) {}
+    static bool needed(const PassScene<2>&) { return force != nullptr; }
     std::vector<StepPoint> points() const override { return {StepPoint::afterForces}; }
     double maxDeltaT(std::size_t, double, double) const override { return stepLimit; }
     std::string stepLimitName() const override { return "body force"; }
-    void at(StepPoint, EngineView& e, double) override
+    void at(StepPoint, EngineView<2>& e, double) override
     {
         ++calls;
-        const Particles& p = e.particles;
-        const ShapeWeights& w = e.weights;
+        const Particles<2>& p = e.particles;
+        const ShapeWeights<2>& w = e.weights;
         const Vector2 b = *force;
         e.strips.forEach([&](std::size_t q) {
             for (int a = 0; a < w.stride; ++a) {
@@ -79,8 +79,8 @@ TEST(UserPass, aRegisteredPassActsAtItsStepPointAsGravityWould)
     EXPECT_EQ(BodyForcePass::calls, 1000);
 
     // The same sums into f_ext in the same order: the same run to the bit.
-    const Particles& a = withGravity->solver().particles();
-    const Particles& b = withPass->solver().particles();
+    const Particles<2>& a = withGravity->solver().particles();
+    const Particles<2>& b = withPass->solver().particles();
     ASSERT_EQ(a.size(), b.size());
     for (std::size_t q = 0; q < a.size(); ++q) {
         ASSERT_EQ(a.x[q], b.x[q]) << "particle " << q;
@@ -112,7 +112,7 @@ TEST(UserPass, aPassesStepLimitBoundsTheEnginesStep)
     // is about 1e-3 s).
     setEntry(dir / "system/controlDict", "adjustTimeStep", "yes");
     const auto simulation = initialisedSimulation(dir);
-    const MpmSolver& solver = simulation->solver();
+    const MpmSolver<2>& solver = simulation->solver();
     EXPECT_EQ(solver.passTimeStepName(), "body force");
     EXPECT_EQ(solver.criticalTimeStep(), 3e-6);
     BodyForcePass::force = nullptr;

@@ -58,7 +58,7 @@ protected:
     void TearDown() override { fs::remove_all(dir); }
     std::string file(const std::string& name) const { return (dir / name).string(); }
     //- Writes `p` with writeParticles and with VTK's writer; the files must be the same bytes.
-    void expectBytesOfVtksWriter(const Particles& p, const std::string& name, double time = 0.1 + 0.2,
+    void expectBytesOfVtksWriter(const Particles<2>& p, const std::string& name, double time = 0.1 + 0.2,
                                  const std::vector<std::string>& materials = {"sand", "steel"},
                                  const std::vector<std::string>& bodies = {"column", "wall", "floor"});
     fs::path dir;
@@ -83,11 +83,11 @@ void expectBitwise(const SymTensor& a, const SymTensor& b)
 }
 
 //- Particles whose values do not survive any decimal or single-precision detour.
-Particles sampleParticles(std::size_t n = 50)
+Particles<2> sampleParticles(std::size_t n = 50)
 {
     std::mt19937_64 rng(42);
     std::uniform_real_distribution<double> u(-1.0, 1.0);
-    Particles p;
+    Particles<2> p;
     for (std::size_t i = 0; i < n; ++i)
         p.add(Vector2(u(rng), u(rng)), 1.0 + u(rng) / 3.0, 0.01 / 3.0, Vector2(0.1 / 3, 0.2 / 7),
               static_cast<int>(i % 3), static_cast<int>(i % 2));
@@ -120,7 +120,7 @@ void writeText(const std::string& path, const std::string& text)
     out << text;
 }
 
-void VtkIo::expectBytesOfVtksWriter(const Particles& p, const std::string& name, double time,
+void VtkIo::expectBytesOfVtksWriter(const Particles<2>& p, const std::string& name, double time,
                                     const std::vector<std::string>& materials,
                                     const std::vector<std::string>& bodies)
 {
@@ -152,16 +152,16 @@ template <class M> void fill(Eigen::MatrixBase<M>& v, std::mt19937_64& rng, int 
 }
 
 //- n particles carrying `groups` and `history`, every state array filled, each at its own scale.
-Particles particlesWith(std::size_t n, const std::vector<FieldGroup>& groups,
+Particles<2> particlesWith(std::size_t n, const std::vector<FieldGroup>& groups,
                         const std::vector<std::string>& history = {})
 {
-    Particles p;
+    Particles<2> p;
     for (FieldGroup g : groups) p.carry(g);
     p.resize(n);
     for (const auto& name : history) p.declareHistory(name);
     std::mt19937_64 rng(n + 17 * groups.size());
     int decade = -9;
-    for (const ParticleField& f : particleFields()) {
+    for (const ParticleField<2>& f : particleFields<2>()) {
         decade = decade < 6 ? decade + 3 : -8;
         if (!f.array || f.role != FieldRole::state || !p.carries(f.group)) continue;
         std::visit([&](auto* a) { for (auto& v : *a) fill(v, rng, decade); }, f.array(p));
@@ -173,7 +173,7 @@ Particles particlesWith(std::size_t n, const std::vector<FieldGroup>& groups,
 
 void expectInputError(const std::string& path, const std::string& fragment)
 {
-    Particles p;
+    Particles<2> p;
     double time = 0.0;
     try {
         readParticles(path, p, time);
@@ -188,13 +188,13 @@ void expectInputError(const std::string& path, const std::string& fragment)
 
 TEST_F(VtkIo, particlesRoundTripBitwise)
 {
-    const Particles p = sampleParticles();
+    const Particles<2> p = sampleParticles();
     const double time = 0.1 + 0.2;  // 0.30000000000000004
     const std::string path = file("particles.vtp");
     writeParticles(path, p, time, {"sand", "steel"}, {"column", "wall", "floor"});
     EXPECT_FALSE(fs::exists(path + ".tmp"));
 
-    Particles q;
+    Particles<2> q;
     q.declareHistory("stale");  // replaced, not merged
     double t = 0.0;
     std::vector<std::string> materials, bodies;
@@ -249,8 +249,8 @@ TEST_F(VtkIo, particlesFileLayout)
 TEST_F(VtkIo, emptyParticlesRoundTrip)
 {
     const std::string path = file("empty.vtp");
-    writeParticles(path, Particles(), 0.0, {}, {});
-    Particles q = sampleParticles(3);
+    writeParticles(path, Particles<2>(), 0.0, {}, {});
+    Particles<2> q = sampleParticles(3);
     double t = -1.0;
     readParticles(path, q, t);
     EXPECT_EQ(q.size(), 0u);
@@ -266,7 +266,7 @@ TEST_F(VtkIo, particleFilesAreTheBytesOfVtksWriterForEveryGroup)
     expectBytesOfVtksWriter(particlesWith(40, {G::polar}), "cosserat");
     expectBytesOfVtksWriter(particlesWith(40, {}, {"kappa", "damage"}), "history");
     expectBytesOfVtksWriter(particlesWith(40, {G::plasticStrain, G::affine, G::polar}, {"kappa"}), "everything");
-    expectBytesOfVtksWriter(Particles(), "empty", 0.0, {}, {});
+    expectBytesOfVtksWriter(Particles<2>(), "empty", 0.0, {}, {});
     expectBytesOfVtksWriter(particlesWith(0, {G::polar}, {"kappa"}), "emptyWithGroups");
     expectBytesOfVtksWriter(particlesWith(1, {G::plasticStrain}, {"kappa"}), "one");
     expectBytesOfVtksWriter(sampleParticles(), "sample");
@@ -276,7 +276,7 @@ TEST_F(VtkIo, particleFilesAreTheBytesOfVtksWriterForAwkwardValuesAndManyParticl
 {
     // Enough particles that every array goes through the writer's buffer in several pieces
     // and VTK computes its ranges in parallel chunks.
-    Particles p = particlesWith(20011, {FieldGroup::plasticStrain, FieldGroup::polar}, {"kappa"});
+    Particles<2> p = particlesWith(20011, {FieldGroup::plasticStrain, FieldGroup::polar}, {"kappa"});
     expectBytesOfVtksWriter(p, "many", 1e-300, {"", "s\xc3\xa4nd", "a b"}, {"x"});
 
     // What the ranges of the header make of NaN, infinities, values beyond VTK's 1e299 of an
@@ -302,7 +302,7 @@ TEST_F(VtkIo, vtksReaderReadsTheParticleFileAsItReadTheFileOfVtksWriter)
 {
     // ParaView reads the file with vtkXMLPolyDataReader: what it reads must be what it read
     // from VTK's writer, and be the particles.
-    const Particles p = particlesWith(300, {FieldGroup::plasticStrain, FieldGroup::affine, FieldGroup::polar},
+    const Particles<2> p = particlesWith(300, {FieldGroup::plasticStrain, FieldGroup::affine, FieldGroup::polar},
                                       {"kappa", "damage"});
     writeParticles(file("ours.vtp"), p, 2.5, {"sand", "steel"}, {"column"});
     reference::writeParticlesWithVtk(file("vtks.vtp"), p, 2.5, {"sand", "steel"}, {"column"});
@@ -373,18 +373,18 @@ TEST_F(VtkIo, vtksReaderReadsTheParticleFileAsItReadTheFileOfVtksWriter)
 TEST_F(VtkIo, particlesOfEveryGroupRoundTripBitwiseFromVtksFilesToo)
 {
     // Files written before the writer streamed (by VTK's writer) read as the new ones do.
-    const Particles p = particlesWith(77, {FieldGroup::plasticStrain, FieldGroup::affine, FieldGroup::polar},
+    const Particles<2> p = particlesWith(77, {FieldGroup::plasticStrain, FieldGroup::affine, FieldGroup::polar},
                                       {"kappa"});
     reference::writeParticlesWithVtk(file("vtks.vtp"), p, 1.0, {"sand"}, {"column"});
     writeParticles(file("ours.vtp"), p, 1.0, {"sand"}, {"column"});
     for (const char* name : {"vtks.vtp", "ours.vtp"}) {
         SCOPED_TRACE(name);
-        Particles q;
+        Particles<2> q;
         double t = 0;
         readParticles(file(name), q, t);
         ASSERT_EQ(q.size(), p.size());
         EXPECT_EQ(q.historyNames(), p.historyNames());
-        for (const ParticleField& f : particleFields()) {
+        for (const ParticleField<2>& f : particleFields<2>()) {
             if (!f.array || f.role != FieldRole::state) continue;
             EXPECT_EQ(q.carries(f.group), p.carries(f.group));
             std::visit(
@@ -414,7 +414,7 @@ TEST_F(VtkIo, anUnwritableParticleFileGivesRunErrorAndLeavesNothing)
 
 TEST_F(VtkIo, historyNamedLikeBuiltinArrayIsRejected)
 {
-    Particles p = sampleParticles(2);
+    Particles<2> p = sampleParticles(2);
     p.declareHistory("pressure");
     EXPECT_THROW(writeParticles(file("p.vtp"), p, 0.0, {}, {}), std::logic_error);
     EXPECT_FALSE(fs::exists(file("p.vtp")));
@@ -494,14 +494,14 @@ TEST_F(VtkIo, anArrayOfAnotherNumericTypeIsConvertedAsVtkDid)
 {
     // Same bytes, another type of the same size: the values are taken as that type says.
     const std::string path = file("p.vtp");
-    const Particles p = sampleParticles(6);
+    const Particles<2> p = sampleParticles(6);
     writeParticles(path, p, 0.0, {}, {});
     std::string text = readText(path);
     const auto at = text.find("type=\"Int32\" Name=\"body\"");
     ASSERT_NE(at, std::string::npos);
     text.replace(at, 12, "type=\"UInt32\"");
     writeText(path, text);
-    Particles q;
+    Particles<2> q;
     double t = 0;
     readParticles(path, q, t);
     EXPECT_EQ(q.body, p.body);
@@ -522,7 +522,7 @@ TEST_F(VtkIo, missingArrayGivesInputError)
 
 TEST_F(VtkIo, gridFileReadableByVtk)
 {
-    Grid g(Vector2(-0.5, 1.0), Vector2(0.25, 0.5), 4, 3);
+    Grid<2> g(Vector2(-0.5, 1.0), Vector2(0.25, 0.5), 4, 3);
     for (int n = 0; n < g.nNodes(); ++n) {
         g.mass[n] = n;
         g.velocity[n] = Vector2(n, -n);

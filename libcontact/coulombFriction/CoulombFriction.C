@@ -5,7 +5,7 @@
 
 namespace gpic {
 
-GPIC_REGISTER(ContactLaw, CoulombFriction, "coulombFriction")
+GPIC_REGISTER(ContactLaw<2>, CoulombFriction, "coulombFriction")
 
 namespace {
 const auto nonNegative = [](const double& m) { return m >= 0; };

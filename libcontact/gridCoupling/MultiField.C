@@ -6,25 +6,25 @@
 
 namespace gpic {
 
-GPIC_REGISTER(GridCoupling, MultiField, "multiField");
+GPIC_REGISTER(GridCoupling<2>, MultiField, "multiField");
 
-void MultiField::particlesToGrid(EngineView& e, double t)
+void MultiField::particlesToGrid(EngineView<2>& e, double t)
 {
-    Grid& grid = e.grid;
-    ContactPass& bodies = *contact_;
+    Grid<2>& grid = e.grid;
+    ContactPass<2>& bodies = *contact_;
     bodies.reset(grid.active);
     grid.resetFields();
-    const Particles& p = e.particles;
-    const ShapeWeights& w = e.weights;
+    const Particles<2>& p = e.particles;
+    const ShapeWeights<2>& w = e.weights;
     const int stride = w.stride;
     // Pointers captured by value or held in the kernel's locals, as in SingleField.
     const int* node = w.node.data();
     const double* Nw = w.N.data();
-    const Grid::ActiveMarker markActive = grid.activeMarker();
+    const Grid<2>::ActiveMarker markActive = grid.activeMarker();
     const bool affine = p.carries(FieldGroup::affine);
     e.strips.forEach([&, node, Nw, markActive, affine, stride](std::size_t q) {
         const std::size_t k0 = q * stride;
-        BodyField& body = bodies.field(p.body[q]);
+        BodyField<2>& body = bodies.field(p.body[q]);
         double* mass = body.mass.data();
         Vector2* momentum = body.momentum.data();
         const double m = e.inertialMass(q);  // m_p, or scaled (MassScaling.H)
@@ -43,7 +43,7 @@ void MultiField::particlesToGrid(EngineView& e, double t)
     // The system (centre-of-mass) field is the sum of the bodies' (F.8.6).
     grid.forEachActiveNode([&](int n) {
         for (int b = 0; b < bodies.nBodies(); ++b) {
-            const BodyField& f = bodies.field(b);
+            const BodyField<2>& f = bodies.field(b);
             grid.mass[n] += f.mass[n];
             grid.momentum[n] += f.momentum[n];
         }
@@ -53,12 +53,12 @@ void MultiField::particlesToGrid(EngineView& e, double t)
     bodyVelocities(e, t);
 }
 
-void MultiField::bodyVelocities(EngineView& e, double t)
+void MultiField::bodyVelocities(EngineView<2>& e, double t)
 {
-    const Grid& grid = e.grid;
+    const Grid<2>& grid = e.grid;
     for (int b = 0; b < contact_->nBodies(); ++b) {
-        BodyField& f = contact_->field(b);
-        const RigidBodyDriver* driver = e.rigid.empty() ? nullptr : e.rigid[b].get();
+        BodyField<2>& f = contact_->field(b);
+        const RigidBodyDriver<2>* driver = e.rigid.empty() ? nullptr : e.rigid[b].get();
         if (driver) {  // drivers cache their motion: serial
             for (int n : grid.active)
                 if (f.mass[n] > 0.0) f.velocity[n] = driver->velocity(t, grid.nodePosition(n));
@@ -71,22 +71,22 @@ void MultiField::bodyVelocities(EngineView& e, double t)
     }
 }
 
-void MultiField::constrainBodies(EngineView& e, double dt)
+void MultiField::constrainBodies(EngineView<2>& e, double dt)
 {
     for (int b = 0; b < contact_->nBodies(); ++b)
         if (e.rigid.empty() || !e.rigid[b])
             e.sides.constrainUpdate(contact_->field(b).velocity, contact_->field(b).accel, dt);
 }
 
-void MultiField::updateGrid(EngineView& e, double tNew, double dt)
+void MultiField::updateGrid(EngineView<2>& e, double tNew, double dt)
 {
-    Grid& grid = e.grid;
-    ContactPass& bodies = *contact_;
+    Grid<2>& grid = e.grid;
+    ContactPass<2>& bodies = *contact_;
     const int nBodies = bodies.nBodies();
     {
         auto timer = e.timers.time("gridUpdate");
         for (int b = 0; b < nBodies; ++b) {
-            BodyField& f = bodies.field(b);
+            BodyField<2>& f = bodies.field(b);
             if (!e.rigid.empty() && e.rigid[b]) {  // a rigid body's field is its driver's velocity (seed A14)
                 for (int n : grid.active) {  // drivers cache their motion: serial
                     if (!(f.mass[n] > 0.0)) continue;
@@ -120,7 +120,7 @@ void MultiField::updateGrid(EngineView& e, double tNew, double dt)
         if (!(grid.mass[n] > 0.0)) return;
         Vector2 momentum = Vector2::Zero(), rate = Vector2::Zero();
         for (int b = 0; b < nBodies; ++b) {
-            const BodyField& f = bodies.field(b);
+            const BodyField<2>& f = bodies.field(b);
             momentum += f.mass[n] * f.velocity[n];
             rate += f.mass[n] * f.accel[n];
         }
@@ -129,12 +129,12 @@ void MultiField::updateGrid(EngineView& e, double tNew, double dt)
     });
 }
 
-void MultiField::remapVelocity(EngineView& e, double tNew, double dt)
+void MultiField::remapVelocity(EngineView<2>& e, double tNew, double dt)
 {
-    Grid& grid = e.grid;
-    ContactPass& bodies = *contact_;
-    const Particles& p = e.particles;
-    const ShapeWeights& w = e.weights;
+    Grid<2>& grid = e.grid;
+    ContactPass<2>& bodies = *contact_;
+    const Particles<2>& p = e.particles;
+    const ShapeWeights<2>& w = e.weights;
     const int stride = w.stride;
     grid.forEachActiveNode([&](int n) {
         grid.momentum[n].setZero();
@@ -164,7 +164,7 @@ void MultiField::remapVelocity(EngineView& e, double tNew, double dt)
     bodies.correctRemapped(grid, e.rigid, tNew);
 }
 
-void MultiField::forEachRigidNode(const Grid& grid, const Drivers& rigid,
+void MultiField::forEachRigidNode(const Grid<2>& grid, const Drivers& rigid,
                                   const std::function<void(int, int)>& visit) const
 {
     if (rigid.empty()) return;

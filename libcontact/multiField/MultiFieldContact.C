@@ -6,7 +6,7 @@
 
 namespace gpic {
 
-GPIC_REGISTER(ContactPass, MultiFieldContact, "multiField")
+GPIC_REGISTER(ContactPass<2>, MultiFieldContact, "multiField")
 
 namespace {
 Vector2 unit(const Vector2& v)
@@ -18,8 +18,8 @@ Vector2 unit(const Vector2& v)
 inline double cross(const Vector2& a, const Vector2& b) { return a.x() * b.y() - a.y() * b.x(); }
 } // namespace
 
-MultiFieldContact::MultiFieldContact(const Dictionary& dict, ContactParts& parts)
-    : ContactPass(parts.nBodies, *parts.grid), law_(std::move(parts.law)), normals_(std::move(parts.normals)),
+MultiFieldContact::MultiFieldContact(const Dictionary& dict, ContactParts<2>& parts)
+    : ContactPass<2>(parts.nBodies, *parts.grid), law_(std::move(parts.law)), normals_(std::move(parts.normals)),
       normalsName_(parts.normalsName), correctRemapped_(dict.getOrDefault<bool>("correctRemapped", false)),
       remappedChoiceMade_(dict.found("correctRemapped")), fileName_(dict.fileName())
 {
@@ -29,7 +29,7 @@ MultiFieldContact::MultiFieldContact(const Dictionary& dict, ContactParts& parts
 Vector2 MultiFieldContact::correctVelocity(int b, int other, int n, const Vector2& vRef, const Vector2& normal,
                                            bool approachOnly)
 {
-    BodyField& f = field(b);
+    BodyField<2>& f = field(b);
     const Vector2 v = f.velocity[n];
     if (approachOnly) {
         const double D = (v - vRef).dot(normal);  // G.2.22: the normal approach speed
@@ -40,11 +40,11 @@ Vector2 MultiFieldContact::correctVelocity(int b, int other, int n, const Vector
     return f.velocity[n] - v;
 }
 
-int MultiFieldContact::correct(Grid& grid, const Particles& p,
-                               const std::vector<std::unique_ptr<RigidBodyDriver>>& rigid, double tNew,
-                               double dt, std::vector<RigidBodyLoad>& loads)
+int MultiFieldContact::correct(Grid<2>& grid, const Particles<2>& p,
+                               const std::vector<std::unique_ptr<RigidBodyDriver<2>>>& rigid, double tNew,
+                               double dt, std::vector<RigidBodyLoad<2>>& loads)
 {
-    for (auto& l : loads) l = RigidBodyLoad{};
+    for (auto& l : loads) l = RigidBodyLoad<2>{};
     contactNodes_.clear();
     for (int n : grid.active)
         if (shared(n)) contactNodes_.push_back(n);
@@ -55,7 +55,7 @@ int MultiFieldContact::correct(Grid& grid, const Particles& p,
     return static_cast<int>(contactNodes_.size());
 }
 
-void MultiFieldContact::correctRemapped(Grid& grid, const std::vector<std::unique_ptr<RigidBodyDriver>>& rigid,
+void MultiFieldContact::correctRemapped(Grid<2>& grid, const std::vector<std::unique_ptr<RigidBodyDriver<2>>>& rigid,
                                         double tNew)
 {
     if (!remappedChoiceMade_) {  // the scheme remaps (MUSL): a choice the scene has to make
@@ -68,8 +68,8 @@ void MultiFieldContact::correctRemapped(Grid& grid, const std::vector<std::uniqu
     if (correctRemapped_ && !contactNodes_.empty()) correctNodes(grid, rigid, tNew, 0.0, nullptr);
 }
 
-void MultiFieldContact::correctNodes(Grid& grid, const std::vector<std::unique_ptr<RigidBodyDriver>>& rigid,
-                                     double tNew, double dt, std::vector<RigidBodyLoad>* loads)
+void MultiFieldContact::correctNodes(Grid<2>& grid, const std::vector<std::unique_ptr<RigidBodyDriver<2>>>& rigid,
+                                     double tNew, double dt, std::vector<RigidBodyLoad<2>>* loads)
 {
     const int nb = nBodies();
     const auto isRigid = [&](int b) { return !rigid.empty() && rigid[b] != nullptr; };

@@ -2,6 +2,6 @@
 
 namespace gpic {
 
-GPIC_REGISTER(ContactLaw, NoSlip, "noSlip")
+GPIC_REGISTER(ContactLaw<2>, NoSlip, "noSlip")
 
 } // namespace gpic

@@ -7,7 +7,7 @@ namespace gpic {
 
 MassGradientNormals::MassGradientNormals(const Dictionary&, const ContactScene& scene) : nBodies_(scene.nBodies()) {}
 
-void MassGradientNormals::place(const Grid& grid, const Particles& p, const std::vector<int>& nodes)
+void MassGradientNormals::place(const Grid<2>& grid, const Particles<2>& p, const std::vector<int>& nodes)
 {
     nx_ = grid.nx();
     ny_ = grid.ny();
@@ -36,7 +36,7 @@ void MassGradientNormals::place(const Grid& grid, const Particles& p, const std:
         if (x[q].x() < low.x() || x[q].x() >= high.x() || x[q].y() < low.y() || x[q].y() >= high.y()) continue;
         // Element centres within one cell of the particle, with bilinear weights S1.
         const Vector2 s = Vector2((x[q] - origin).array() / h.array()) - Vector2(0.5, 0.5);
-        const int i0 = Grid::floorToInt(s.x()), j0 = Grid::floorToInt(s.y());
+        const int i0 = Grid<2>::floorToInt(s.x()), j0 = Grid<2>::floorToInt(s.y());
         const double fx = s.x() - i0, fy = s.y() - j0;
         double* rho = density_.data() + static_cast<std::size_t>(body[q]) * cells;
         for (int b = 0; b < 2; ++b)
@@ -68,6 +68,6 @@ Vector2 MassGradientNormals::outward(int body, int node) const
     return len > 0.0 ? Vector2(g / len) : Vector2::Zero();
 }
 
-GPIC_REGISTER(ContactNormals, MassGradientNormals, "massGradient")
+GPIC_REGISTER(ContactNormals<2>, MassGradientNormals, "massGradient")
 
 } // namespace gpic

@@ -29,7 +29,7 @@ RigidSurface::RigidSurface(const Dictionary& d)
     if (area2 < 0) std::reverse(points_.begin(), points_.end());  // counter-clockwise
 }
 
-void RigidSurface::place(const Particles& p, int body)
+void RigidSurface::place(const Particles<2>& p, int body)
 {
     double mass = 0;
     Vector2 c = Vector2::Zero(), c0 = Vector2::Zero();

@@ -17,7 +17,7 @@ RigidSurfaceNormals::RigidSurfaceNormals(const Dictionary& dict, const ContactSc
     }
 }
 
-void RigidSurfaceNormals::place(const Grid& grid, const Particles& p, const std::vector<int>& nodes)
+void RigidSurfaceNormals::place(const Grid<2>& grid, const Particles<2>& p, const std::vector<int>& nodes)
 {
     MassGradientNormals::place(grid, p, nodes);
     for (std::size_t b = 0; b < surfaces_.size(); ++b)
@@ -35,6 +35,6 @@ Vector2 RigidSurfaceNormals::towardsRigid(int b, int r, int n, const Vector2& x)
     return -surfaces_[r]->outwardNormal(x, outward(b, n));
 }
 
-GPIC_REGISTER(ContactNormals, RigidSurfaceNormals, "rigidSurface")
+GPIC_REGISTER(ContactNormals<2>, RigidSurfaceNormals, "rigidSurface")
 
 } // namespace gpic

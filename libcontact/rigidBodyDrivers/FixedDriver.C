@@ -2,6 +2,6 @@
 
 namespace gpic {
 
-GPIC_REGISTER(RigidBodyDriver, FixedDriver, "fixed")
+GPIC_REGISTER(RigidBodyDriver<2>, FixedDriver, "fixed")
 
 } // namespace gpic

@@ -7,7 +7,7 @@
 
 namespace gpic {
 
-GPIC_REGISTER(RigidBodyDriver, PrescribedVelocityDriver, "prescribedVelocity")
+GPIC_REGISTER(RigidBodyDriver<2>, PrescribedVelocityDriver, "prescribedVelocity")
 
 PrescribedVelocityDriver::PrescribedVelocityDriver(const Dictionary& dict) : name_(dict.name())
 {
@@ -86,7 +86,7 @@ Vector2 PrescribedVelocityDriver::move(double t, double dt, const Vector2& x) co
     return c1 + Vector2(c * r.x() - s * r.y(), s * r.x() + c * r.y());
 }
 
-void PrescribedVelocityDriver::advance(double t, double dt, const RigidBodyLoad& load)
+void PrescribedVelocityDriver::advance(double t, double dt, const RigidBodyLoad<2>& load)
 {
     if (!started_) recogniseStop(t);
     if (!hasTarget_ || stopped_) return;

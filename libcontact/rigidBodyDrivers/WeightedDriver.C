@@ -7,7 +7,7 @@
 
 namespace gpic {
 
-GPIC_REGISTER(RigidBodyDriver, WeightedDriver, "weighted")
+GPIC_REGISTER(RigidBodyDriver<2>, WeightedDriver, "weighted")
 
 WeightedDriver::WeightedDriver(const Dictionary& dict) : name_(dict.name())
 {
@@ -27,7 +27,7 @@ WeightedDriver::WeightedDriver(const Dictionary& dict) : name_(dict.name())
     if (damping_ < 0.0 || damping_ >= 1.0) dict.fail("damping", "weighted body " + name_ + ": damping must lie in [0, 1)");
 }
 
-void WeightedDriver::attach(const RigidBodyInfo& info)
+void WeightedDriver::attach(const RigidBodyInfo<2>& info)
 {
     if (!(info.mass > 0.0)) throw RunError("weighted rigid body " + name_ + " has no particles (no mass)");
     mass_ = info.mass;
@@ -67,7 +67,7 @@ Vector2 WeightedDriver::velocity(double t, const Vector2&) const
     return v;
 }
 
-void WeightedDriver::advance(double t, double dt, const RigidBodyLoad& load)
+void WeightedDriver::advance(double t, double dt, const RigidBodyLoad<2>& load)
 {
     if (!started_) start(t);
     // The step [t, t + dt] moved the body with v(t + dt); that is the new state.

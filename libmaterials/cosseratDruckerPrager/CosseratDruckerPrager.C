@@ -12,7 +12,7 @@
 
 namespace gpic {
 
-GPIC_REGISTER(Material, CosseratDruckerPrager, "cosseratDruckerPrager")
+GPIC_REGISTER(Material<2>, CosseratDruckerPrager, "cosseratDruckerPrager")
 
 namespace {
 
@@ -35,7 +35,7 @@ const char* const twoForms = "give either alpha (and beta), or phi (and psi) in 
 } // namespace
 
 CosseratDruckerPrager::CosseratDruckerPrager(const Dictionary& dict)
-    : Material(dict),
+    : Material<2>(dict),
       a1_(coefficient(dict, "a1", 0.375)),
       a2_(coefficient(dict, "a2", 0.125)),
       a3_(coefficient(dict, "a3", 1.0)),
@@ -126,7 +126,7 @@ int CosseratDruckerPrager::returnMap(CosseratVector& s, double& dLambda, Cossera
     return static_cast<int>(YieldState::apex);
 }
 
-void CosseratDruckerPrager::updateStress(Particles& p, const ParticleBlock& block, double) const
+void CosseratDruckerPrager::updateStress(Particles<2>& p, const ParticleBlock& block, double) const
 {
     auto& state = p.history("yieldState");
     auto& epsPs = p.history("epsPs");

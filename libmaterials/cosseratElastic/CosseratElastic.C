@@ -4,11 +4,11 @@
 
 namespace gpic {
 
-GPIC_REGISTER(Material, CosseratElastic, "cosseratElastic")
+GPIC_REGISTER(Material<2>, CosseratElastic, "cosseratElastic")
 
-CosseratElastic::CosseratElastic(const Dictionary& dict) : Material(dict), elastic_(dict) {}
+CosseratElastic::CosseratElastic(const Dictionary& dict) : Material<2>(dict), elastic_(dict) {}
 
-void CosseratElastic::updateStress(Particles& p, const ParticleBlock& block, double) const
+void CosseratElastic::updateStress(Particles<2>& p, const ParticleBlock& block, double) const
 {
     CosseratParticles& c = p.polar;
     for (std::size_t i = block.begin; i < block.end; ++i) {

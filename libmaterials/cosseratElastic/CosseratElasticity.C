@@ -53,7 +53,7 @@ double CosseratElasticity::rotationalTimeStep(double rho, double h) const
     return inverse2 > 0 ? 1.0 / std::sqrt(inverse2) : 1e300;
 }
 
-void setCosseratStress(Particles& p, std::size_t i, const CosseratVector& s, double l)
+void setCosseratStress(Particles<2>& p, std::size_t i, const CosseratVector& s, double l)
 {
     p.sigma[i] = SymTensor(s[0], s[1], s[2], s[3]);
     p.polar.sigma21[i] = s[4];

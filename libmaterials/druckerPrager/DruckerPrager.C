@@ -16,7 +16,7 @@
 
 namespace gpic {
 
-GPIC_REGISTER(Material, DruckerPrager, "druckerPrager")
+GPIC_REGISTER_DIMS(Material, DruckerPrager, "druckerPrager")
 
 namespace {
 
@@ -31,9 +31,10 @@ std::string number(double v)
 
 } // namespace
 
-DruckerPrager::DruckerPrager(const Dictionary& dict)
-    : Material(dict), elastic_(dict), qPhi_(0), kPhi_(0), qPsi_(0),
-      sigmaT_(std::numeric_limits<double>::infinity()), grains_(dict, rho())
+template <int D>
+DruckerPrager<D>::DruckerPrager(const Dictionary& dict)
+    : Material<D>(dict), elastic_(dict), qPhi_(0), kPhi_(0), qPsi_(0),
+      sigmaT_(std::numeric_limits<double>::infinity()), grains_(dict, this->rho())
 {
     const auto nonNegative = [](const char* key) { return std::string(key) + " >= 0"; };
     const auto isNonNegative = [](const double& v) { return v >= 0; };
@@ -52,7 +53,7 @@ DruckerPrager::DruckerPrager(const Dictionary& dict)
 
     // Coefficients to 4 digits, stresses and angles to 6.
     std::ostringstream line;
-    line << std::setprecision(6) << "druckerPrager " << name() << ": ";
+    line << std::setprecision(6) << "druckerPrager " << this->name() << ": ";
     if (direct) {
         qPhi_ = dict.getChecked<double>("qPhi", isNonNegative, nonNegative("qPhi"));
         kPhi_ = dict.getChecked<double>("kPhi", isNonNegative, nonNegative("kPhi"));
@@ -94,12 +95,13 @@ DruckerPrager::DruckerPrager(const Dictionary& dict)
     info() << line.str() << '\n';
 }
 
-void DruckerPrager::updateStress(Particles& p, const ParticleBlock& block, double) const
+template <int D> void DruckerPrager<D>::updateStress(Particles<D>& p, const ParticleBlock& block, double) const
 {
     const double G = elastic_.G(), K = elastic_.K();
     const double tauP = std::max(kPhi_ - qPhi_ * sigmaT_, 0.0);  // q at the corner, eq. H.3.14
     auto& state = p.history("yieldState");
     auto& epsPs = p.history("epsPs");
+    using SymTensor = typename Space<D>::SymTensor;
     for (std::size_t i = block.begin; i < block.end; ++i) {
         SymTensor& s = p.sigma[i];
         if (grains_.lost(p.m[i], p.V[i])) {
@@ -154,11 +156,16 @@ void DruckerPrager::updateStress(Particles& p, const ParticleBlock& block, doubl
             s[c] = (qI > 0 ? dev * scale : 0.0) + pN;
             epsP[c] += lambdaS * (qI > 0 ? dev / twoQ : 0.0) + volumetric;
         }
-        epsP[XY] += lambdaS * (qI > 0 ? s[XY] / twoQ : 0.0);
-        s[XY] = qI > 0 ? s[XY] * scale : 0.0;
+        for (int c = XY; c < Space<D>::nSym; ++c) {  // the shears
+            epsP[c] += lambdaS * (qI > 0 ? s[c] / twoQ : 0.0);
+            s[c] = qI > 0 ? s[c] * scale : 0.0;
+        }
         epsPs[i] += lambdaS;  // eps_q of the plastic increment, eq. H.3.4
         state[i] = code(how);
     }
 }
+
+template class DruckerPrager<2>;
+template class DruckerPrager<3>;
 
 } // namespace gpic

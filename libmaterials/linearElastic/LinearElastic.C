@@ -7,40 +7,33 @@
 
 namespace gpic {
 
-GPIC_REGISTER(Material, LinearElastic, "linearElastic")
+GPIC_REGISTER_DIMS(Material, LinearElastic, "linearElastic")
 
-LinearElastic::LinearElastic(const Dictionary& dict)
-    : Material(dict),
+template <int D>
+LinearElastic<D>::LinearElastic(const Dictionary& dict)
+    : Material<D>(dict),
       E_(dict.getChecked<double>("E", [](const double& v) { return v > 0; }, "E > 0")),
       nu_(dict.getChecked<double>(
-          "nu", [](const double& v) { return v > -1.0 && v < 0.5; }, "-1 < nu < 0.5"))
+          "nu", [](const double& v) { return v > -1.0 && v < 0.5; }, "-1 < nu < 0.5")),
+      elastic_(E_, nu_)
 {}
 
-double LinearElastic::waveSpeed() const
+template <int D> double LinearElastic<D>::waveSpeed() const
 {
     // P-wave speed sqrt((K + 4G/3)/rho) (seed A4).
-    return std::sqrt((K() + 4.0 * G() / 3.0) / rho());
+    return std::sqrt((K() + 4.0 * G() / 3.0) / this->rho());
 }
 
-void LinearElastic::updateStress(Particles& p, const ParticleBlock& block, double) const
+template <int D> void LinearElastic<D>::updateStress(Particles<D>& p, const ParticleBlock& block, double) const
 {
-    const double G2 = 2.0 * G();
-    const double alpha1 = K() + 2.0 * G2 / 3.0;  // eq. H.2.2
-    const double alpha2 = K() - G2 / 3.0;
     for (std::size_t i = block.begin; i < block.end; ++i) {
-        SymTensor& s = p.sigma[i];
-        const SymTensor& de = p.dEps[i];
+        typename Space<D>::SymTensor& s = p.sigma[i];
         rotateJaumann(s, p.dOmega[i]);
-        s[XX] += alpha1 * de[XX] + alpha2 * de[YY];  // eq. H.2.1
-        s[YY] += alpha2 * de[XX] + alpha1 * de[YY];
-        s[ZZ] += alpha2 * (de[XX] + de[YY]);
-        s[XY] += G2 * de[XY];
-        if (de[ZZ] != 0.0) {  // axisymmetric: the hoop strain (plane strain has none)
-            s[XX] += alpha2 * de[ZZ];
-            s[YY] += alpha2 * de[ZZ];
-            s[ZZ] += alpha1 * de[ZZ];
-        }
+        elastic_.addElasticIncrement(s, p.dEps[i]);  // eq. H.2.1
     }
 }
+
+template class LinearElastic<2>;
+template class LinearElastic<3>;
 
 } // namespace gpic

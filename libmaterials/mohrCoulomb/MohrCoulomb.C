@@ -15,7 +15,7 @@
 
 namespace gpic {
 
-GPIC_REGISTER(Material, MohrCoulomb, "mohrCoulomb")
+GPIC_REGISTER_DIMS(Material, MohrCoulomb, "mohrCoulomb")
 
 namespace {
 
@@ -68,8 +68,9 @@ double shearHardeningIncrement(const Eigen::Vector3d& d)
 
 } // namespace
 
-MohrCoulomb::MohrCoulomb(const Dictionary& dict)
-    : Material(dict),
+template <int D>
+MohrCoulomb<D>::MohrCoulomb(const Dictionary& dict)
+    : Material<D>(dict),
       elastic_(dict),
       phi_(property(dict, "phi", "phiTable", [](double v) { return v >= 0 && v < 90; },
                     "0 <= phi < 90 (degrees)")),
@@ -77,7 +78,7 @@ MohrCoulomb::MohrCoulomb(const Dictionary& dict)
                     "0 <= psi <= phi (degrees)", 0.0)),
       c_(property(dict, "c", "cTable", [](double v) { return v >= 0; }, "c >= 0")),
       return_(elastic_.alpha1(), elastic_.alpha2()),
-      grains_(dict, rho()),
+      grains_(dict, this->rho()),
       constant_(true)
 {
     // psi <= phi everywhere: both are piecewise linear, so at every breakpoint of either.
@@ -106,7 +107,7 @@ MohrCoulomb::MohrCoulomb(const Dictionary& dict)
                 (!sigmaT_ || sigmaT_->isConstant());
 }
 
-YieldPlanes MohrCoulomb::planes(double epsPs, double epsPt) const
+template <int D> YieldPlanes MohrCoulomb<D>::planes(double epsPs, double epsPt) const
 {
     const double phiDeg = phi_(epsPs), c = c_(epsPs);
     const double sinPhi = std::sin(phiDeg * degree), sinPsi = std::sin(psi_(epsPs) * degree);
@@ -146,8 +147,9 @@ YieldPlanes MohrCoulomb::planes(double epsPs, double epsPt) const
     return set;
 }
 
-void MohrCoulomb::updateStress(Particles& p, const ParticleBlock& block, double) const
+template <int D> void MohrCoulomb<D>::updateStress(Particles<D>& p, const ParticleBlock& block, double) const
 {
+    using SymTensor = typename Space<D>::SymTensor;
     auto& state = p.history("yieldState");
     auto& epsPs = p.history("epsPs");
     auto& epsPt = p.history("epsPt");
@@ -159,7 +161,7 @@ void MohrCoulomb::updateStress(Particles& p, const ParticleBlock& block, double)
     // roots and a division in the principal values, the square root of the hardening) overlap
     // instead of waiting one after the other: the pass is latency-bound, not arithmetic-bound.
     constexpr std::size_t batch = 32;
-    std::array<PrincipalStresses, batch> principal;
+    std::array<PrincipalStresses<D>, batch> principal;
     std::array<bool, batch> lost;
     std::array<PrincipalReturnResult, batch> returned;
     for (std::size_t b = block.begin; b < block.end; b += batch) {
@@ -171,7 +173,7 @@ void MohrCoulomb::updateStress(Particles& p, const ParticleBlock& block, double)
             rotateJaumann(s, p.dOmega[i]);
             elastic_.addElasticIncrement(s, p.dEps[i]);  // sigma_I, eq. H.2.1
             // Built in place: a copy would read back the values as they are being stored.
-            new (&principal[i - b]) PrincipalStresses(s);  // eq. H.5.26 - H.5.33
+            new (&principal[i - b]) PrincipalStresses<D>(s);  // eq. H.5.26 - H.5.33
         }
         for (std::size_t i = b; i < e; ++i) {
             if (lost[i - b]) continue;
@@ -192,7 +194,7 @@ void MohrCoulomb::updateStress(Particles& p, const ParticleBlock& block, double)
                 state[i] = code(YieldState::elastic);
                 continue;
             }
-            const PrincipalStresses& trial = principal[i - b];
+            const PrincipalStresses<D>& trial = principal[i - b];
             s = trial.tensor(r.sigma);  // back to x1, x2 with the axes kept, eq. H.5.34
             p.epsP[i] += trial.tensor(r.dEpsPShear + r.dEpsPTension);
             epsPs[i] += shearHardeningIncrement(r.dEpsPShear);
@@ -205,5 +207,8 @@ void MohrCoulomb::updateStress(Particles& p, const ParticleBlock& block, double)
         }
     }
 }
+
+template class MohrCoulomb<2>;
+template class MohrCoulomb<3>;
 
 } // namespace gpic

@@ -1,11 +1,13 @@
 #include "plasticity/PrincipalStresses.H"
 
-#include <utility>
+#include <Eigen/Eigenvalues>
+
 #include <cmath>
+#include <utility>
 
 namespace gpic {
 
-PrincipalStresses::PrincipalStresses(const SymTensor& s)
+PrincipalStresses<2>::PrincipalStresses(const Space<2>::SymTensor& s)
 {
     const double centre = 0.5 * (s[XX] + s[YY]);
     const double half = 0.5 * (s[XX] - s[YY]);
@@ -49,6 +51,32 @@ PrincipalStresses::PrincipalStresses(const SymTensor& s)
     sigma_ << v[0], v[1], v[2];
     axis_ = {a[0], a[1], a[2]};
     for (int i = 0; i < 3; ++i) position_[axis_[i]] = i;
+}
+
+PrincipalStresses<3>::PrincipalStresses(const Space<3>::SymTensor& s)
+{
+    if (s[XY] == 0.0 && s[YZ] == 0.0 && s[XZ] == 0.0) {
+        // Already principal: keep the coordinate axes exactly, equal values in axis order.
+        std::array<int, 3> order{0, 1, 2};
+        const auto exchange = [&](int i, int j) {
+            if (s[order[j]] < s[order[i]]) std::swap(order[i], order[j]);
+        };
+        exchange(0, 1);
+        exchange(1, 2);
+        exchange(0, 1);
+        axes_.setZero();
+        for (int i = 0; i < 3; ++i) {
+            sigma_[i] = s[order[i]];
+            axes_(order[i], i) = 1.0;
+        }
+        return;
+    }
+    Eigen::Matrix3d S;
+    S << s[XX], s[XY], s[XZ], s[XY], s[YY], s[YZ], s[XZ], s[YZ], s[ZZ];
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen;
+    eigen.computeDirect(S);  // ascending values, orthonormal vectors
+    sigma_ = eigen.eigenvalues();
+    axes_ = eigen.eigenvectors();
 }
 
 } // namespace gpic

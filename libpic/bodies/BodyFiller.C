@@ -10,7 +10,7 @@ namespace gpic {
 
 namespace {
 
-int materialIndex(const Dictionary& body, const std::vector<std::unique_ptr<Material>>& materials)
+int materialIndex(const Dictionary& body, const std::vector<std::unique_ptr<Material<2>>>& materials)
 {
     const std::string name = body.get<std::string>("material");
     std::string valid;
@@ -66,8 +66,8 @@ private:
 
 } // namespace
 
-FilledBodies fillBodies(const Dictionary& bodiesDict, const Grid& grid,
-                        const std::vector<std::unique_ptr<Material>>& materials,
+FilledBodies fillBodies(const Dictionary& bodiesDict, const Grid<2>& grid,
+                        const std::vector<std::unique_ptr<Material<2>>>& materials,
                         const Vector2& gravity)
 {
     FilledBodies out;

@@ -3,9 +3,10 @@
 
 namespace gpic {
 
-std::vector<RigidBodyInfo> RigidBodyInfo::ofBodies(const Particles& p, std::size_t nBodies, const Vector2& gravity)
+template <int D>
+std::vector<RigidBodyInfo<D>> RigidBodyInfo<D>::ofBodies(const Particles<D>& p, std::size_t nBodies, const Vector& gravity)
 {
-    std::vector<RigidBodyInfo> info(nBodies);
+    std::vector<RigidBodyInfo<D>> info(nBodies);
     for (std::size_t q = 0; q < p.size(); ++q) {
         auto& b = info[p.body[q]];
         b.mass += p.m[q];
@@ -19,10 +20,12 @@ std::vector<RigidBodyInfo> RigidBodyInfo::ofBodies(const Particles& p, std::size
     }
     for (std::size_t q = 0; q < p.size(); ++q) {
         auto& b = info[p.body[q]];
-        const Vector2& a = p.halfSize[q];
+        const Vector& a = p.halfSize[q];
         b.inertia += p.m[q] * ((p.x[q] - b.centroid).squaredNorm() + a.squaredNorm() / 3.0);
     }
     return info;
 }
+
+template class RigidBodyInfo<2>;
 
 } // namespace gpic

@@ -4,17 +4,17 @@
 
 namespace gpic {
 
-GridSides::GridSides(Conditions conditions, const Grid& grid) : conditions_(std::move(conditions))
+template <int D> GridSides<D>::GridSides(Conditions conditions, const Grid<D>& grid) : conditions_(std::move(conditions))
 {
     refresh(grid);
 }
 
-void GridSides::refresh(const Grid& grid)
+template <int D> void GridSides<D>::refresh(const Grid<D>& grid)
 {
     // An open stretch's nodes are left free, a closed one is a wall.
     hasOutlet_ = false;
     for (int s = 0; s < count; ++s) {
-        const BoundaryCondition& bc = *conditions_[s];
+        const BoundaryCondition<D>& bc = *conditions_[s];
         nodes_[s].clear();
         for (int n : grid.sideNodes(static_cast<GridSide>(s)))
             if (bc.isOpen(bc.along(grid.nodePosition(n)))) hasOutlet_ = true;
@@ -23,51 +23,63 @@ void GridSides::refresh(const Grid& grid)
     }
 }
 
-void GridSides::constrain(std::vector<Vector2>& velocity) const
+template <int D> void GridSides<D>::constrain(std::vector<Vector>& velocity) const
 {
     for (int s = 0; s < count; ++s) conditions_[s]->constrain(velocity, nodes_[s]);
 }
 
-void GridSides::constrainUpdate(std::vector<Vector2>& velocity, std::vector<Vector2>& accel, double dt) const
+template <int D> void GridSides<D>::constrainUpdate(std::vector<Vector>& velocity, std::vector<Vector>& accel, double dt) const
 {
     for (int s = 0; s < count; ++s) conditions_[s]->constrainUpdate(velocity, accel, dt, nodes_[s]);
 }
 
-bool GridSides::leftThroughOpening(const Grid& grid, const Vector2& x) const
+template <int D> bool GridSides<D>::leftThroughOpening(const Grid<D>& grid, const Vector& x) const
 {
-    const Vector2 low = grid.origin(), high = grid.upper();
+    const Vector low = grid.origin(), high = grid.upper();
     // The cell a particle leaves through moves freely where one of its nodes on the side is
-    // open: the stretch of the opening widens by a cell on each side.
+    // open: the opening widens by a cell each way along the side.
     const auto open = [&](GridSide side) {
-        const BoundaryCondition& bc = condition(side);
-        const double s = bc.along(x);
-        const double h = side == GridSide::left || side == GridSide::right ? grid.cellSize().y() : grid.cellSize().x();
-        return bc.isOpen(s) || bc.isOpen(s - h) || bc.isOpen(s + h);
+        const BoundaryCondition<D>& bc = condition(side);
+        const typename BoundaryCondition<D>::FacePoint s = bc.along(x), h = bc.along(grid.cellSize());
+        if (bc.isOpen(s)) return true;
+        for (int shift = 1; shift < (D == 2 ? 3 : 9); ++shift) {  // the neighbours s + (i, j) h, i, j in {-1, 0, 1}
+            typename BoundaryCondition<D>::FacePoint t = s;
+            for (int a = 0, code = shift; a < D - 1; ++a, code /= 3) t[a] += (code % 3 == 1 ? -h[a] : code % 3 == 2 ? h[a] : 0.0);
+            if (bc.isOpen(t)) return true;
+        }
+        return false;
     };
-    return (x.x() < low.x() && open(GridSide::left)) || (x.x() > high.x() && open(GridSide::right)) ||
-           (x.y() < low.y() && open(GridSide::bottom)) || (x.y() > high.y() && open(GridSide::top));
+    for (int s = 0; s < count; ++s) {
+        const auto side = static_cast<GridSide>(s);
+        const int axis = sideAxis(side);
+        if ((lowSide(side) ? x[axis] < low[axis] : x[axis] > high[axis]) && open(side)) return true;
+    }
+    return false;
 }
 
-bool GridSides::keepInsideWalls(const Grid& grid, Vector2& x, Vector2& v) const
+template <int D> bool GridSides<D>::keepInsideWalls(const Grid<D>& grid, Vector& x, Vector& v) const
 {
-    if (!std::isfinite(x.x()) || !std::isfinite(x.y())) return false;
+    if (!x.allFinite()) return false;
     if (hasOutlet_ && leftThroughOpening(grid, x)) return false;  // the outflow takes it
-    const Vector2 low = grid.origin(), high = grid.upper(), h = grid.cellSize();
+    const Vector low = grid.origin(), high = grid.upper(), h = grid.cellSize();
     bool moved = false;
     for (int s = 0; s < count; ++s) {
-        const BoundaryCondition& bc = *conditions_[s];
-        const int axis = s == static_cast<int>(GridSide::left) || s == static_cast<int>(GridSide::right) ? 0 : 1;
-        const bool lowSide = s == static_cast<int>(GridSide::left) || s == static_cast<int>(GridSide::bottom);
-        const double side = lowSide ? low[axis] : high[axis];
-        const double past = lowSide ? side - x[axis] : x[axis] - side;
+        const BoundaryCondition<D>& bc = *conditions_[s];
+        const int axis = sideAxis(static_cast<GridSide>(s));
+        const bool isLow = lowSide(static_cast<GridSide>(s));
+        const double side = isLow ? low[axis] : high[axis];
+        const double past = isLow ? side - x[axis] : x[axis] - side;
         // Only a small overshoot through a closed wall: anything larger is left for the
         // stability guard to report, and an open stretch lets the particle go.
         if (!(past > 0.0) || past > 0.5 * h[axis] || !bc.isWall()) continue;
         x[axis] = side;
-        if (lowSide ? v[axis] < 0.0 : v[axis] > 0.0) v[axis] = 0.0;
+        if (isLow ? v[axis] < 0.0 : v[axis] > 0.0) v[axis] = 0.0;
         moved = true;
     }
     return moved;
 }
+
+template class GridSides<2>;
+template class GridSides<3>;
 
 } // namespace gpic

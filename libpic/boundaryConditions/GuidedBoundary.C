@@ -2,13 +2,19 @@
 
 namespace gpic {
 
-GPIC_REGISTER(BoundaryCondition, GuidedBoundary, "guided")
+GPIC_REGISTER_DIMS(BoundaryCondition, GuidedBoundary, "guided")
 
-void GuidedBoundary::constrain(std::vector<Vector2>& field, const std::vector<int>& nodes) const
+template <int D>
+void GuidedBoundary<D>::constrain(std::vector<typename Space<D>::Vector>& field, const std::vector<int>& nodes) const
 {
-    // The component along the side: x2 on left and right, x1 on bottom and top.
-    const int axis = (side() == GridSide::left || side() == GridSide::right) ? 1 : 0;
-    for (int n : nodes) field[n][axis] = 0.0;
+    // The components along the side: every axis but its normal one.
+    const int normal = sideAxis(this->side());
+    for (int n : nodes)
+        for (int a = 0; a < D; ++a)
+            if (a != normal) field[n][a] = 0.0;
 }
+
+template class GuidedBoundary<2>;
+template class GuidedBoundary<3>;
 
 } // namespace gpic

@@ -13,19 +13,19 @@ Dictionary readCaseFile(const std::string& caseDir, const std::string& relativeP
                                 relativePath);
 }
 
-std::vector<std::unique_ptr<Material>> readMaterials(const Dictionary& materialsDict)
+std::vector<std::unique_ptr<Material<2>>> readMaterials(const Dictionary& materialsDict)
 {
-    std::vector<std::unique_ptr<Material>> materials;
+    std::vector<std::unique_ptr<Material<2>>> materials;
     for (const auto& key : materialsDict.keys()) {
         if (!materialsDict.isDict(key))
             materialsDict.fail(key, "'" + key + "' is not a material sub-dictionary");
-        materials.push_back(Material::New(materialsDict.subDict(key)));
+        materials.push_back(Material<2>::New(materialsDict.subDict(key)));
     }
     if (materials.empty()) materialsDict.fail("", "no material is defined");
     return materials;
 }
 
-std::array<std::unique_ptr<BoundaryCondition>, PlaneSpace::nFaces> readBoundaries(const Dictionary& gridDict)
+std::array<std::unique_ptr<BoundaryCondition<2>>, PlaneSpace::nFaces> readBoundaries(const Dictionary& gridDict)
 {
     const Dictionary& sides = gridDict.subDict("boundaries");
     // The axis of an axisymmetric scene (the left side at r = 0): u_r = 0 there, a mirror.
@@ -33,12 +33,12 @@ std::array<std::unique_ptr<BoundaryCondition>, PlaneSpace::nFaces> readBoundarie
         gridDict.getWordOrDefault("geometry", {"planeStrain", "axisymmetric"}, "planeStrain") == "axisymmetric" &&
         gridDict.get<Vector2>("origin").x() == 0.0;
     const Dictionary axis = Dictionary::parse("type symmetry;", sides.name() + "/left");
-    std::array<std::unique_ptr<BoundaryCondition>, PlaneSpace::nFaces> bcs;
+    std::array<std::unique_ptr<BoundaryCondition<2>>, PlaneSpace::nFaces> bcs;
     for (int s = 0; s < 4; ++s) {
         const std::string& side = gridSideNames()[s];
         if (s == static_cast<int>(GridSide::left) && leftIsAxis) {
             if (!sides.found(side)) {
-                bcs[s] = Registry<BoundaryCondition>::select(axis, axis, GridSide::left);
+                bcs[s] = Registry<BoundaryCondition<2>>::select(axis, axis, GridSide::left);
                 continue;
             }
             const std::string type = sides.subDict(side).get<std::string>("type");
@@ -47,23 +47,23 @@ std::array<std::unique_ptr<BoundaryCondition>, PlaneSpace::nFaces> readBoundarie
                                                  "u_r = 0, not '" + type + "'; valid choices: symmetry (the default), "
                                                  "slip, fixed");
         }
-        bcs[s] = Registry<BoundaryCondition>::select(sides.subDict(side), sides.subDict(side),
+        bcs[s] = Registry<BoundaryCondition<2>>::select(sides.subDict(side), sides.subDict(side),
                                                      static_cast<GridSide>(s));
     }
     return bcs;
 }
 
-std::array<bool, PlaneSpace::nFaces> mirrorSides(const std::array<std::unique_ptr<BoundaryCondition>, PlaneSpace::nFaces>& boundaries)
+std::array<bool, PlaneSpace::nFaces> mirrorSides(const std::array<std::unique_ptr<BoundaryCondition<2>>, PlaneSpace::nFaces>& boundaries)
 {
     std::array<bool, PlaneSpace::nFaces> mirror{};
     for (std::size_t s = 0; s < 4; ++s) mirror[s] = boundaries[s]->isMirror();
     return mirror;
 }
 
-std::vector<std::unique_ptr<RigidBodyDriver>> readRigidBodies(const Dictionary& dict,
+std::vector<std::unique_ptr<RigidBodyDriver<2>>> readRigidBodies(const Dictionary& dict,
                                                               const std::vector<std::string>& bodyNames)
 {
-    std::vector<std::unique_ptr<RigidBodyDriver>> drivers(bodyNames.size());
+    std::vector<std::unique_ptr<RigidBodyDriver<2>>> drivers(bodyNames.size());
     for (const auto& key : dict.keys()) {
         const auto it = std::find(bodyNames.begin(), bodyNames.end(), key);
         if (it == bodyNames.end()) {
@@ -72,18 +72,18 @@ std::vector<std::unique_ptr<RigidBodyDriver>> readRigidBodies(const Dictionary& 
             dict.fail(key, "'" + key + "' is not a body of the particles; valid choices: " + valid);
         }
         if (!dict.isDict(key)) dict.fail(key, "'" + key + "' needs a driver sub-dictionary { type ...; }");
-        drivers[static_cast<std::size_t>(it - bodyNames.begin())] = RigidBodyDriver::New(dict.subDict(key));
+        drivers[static_cast<std::size_t>(it - bodyNames.begin())] = RigidBodyDriver<2>::New(dict.subDict(key));
     }
     dict.warnUnused();
     return drivers;
 }
 
-std::vector<std::unique_ptr<ParticleLoad>> readLoads(const Dictionary& dict)
+std::vector<std::unique_ptr<ParticleLoad<2>>> readLoads(const Dictionary& dict)
 {
-    std::vector<std::unique_ptr<ParticleLoad>> loads;
+    std::vector<std::unique_ptr<ParticleLoad<2>>> loads;
     for (const auto& key : dict.keys()) {
         if (!dict.isDict(key)) dict.fail(key, "'" + key + "' needs a load sub-dictionary { type ...; }");
-        loads.push_back(ParticleLoad::New(dict.subDict(key)));
+        loads.push_back(ParticleLoad<2>::New(dict.subDict(key)));
     }
     dict.warnUnused();
     return loads;
@@ -135,7 +135,7 @@ std::string pvdPath(const std::string& caseDir)
     return own.string();
 }
 
-std::vector<std::string> materialNames(const std::vector<std::unique_ptr<Material>>& materials)
+std::vector<std::string> materialNames(const std::vector<std::unique_ptr<Material<2>>>& materials)
 {
     std::vector<std::string> names;
     for (const auto& m : materials) names.push_back(m->name());

@@ -17,7 +17,7 @@ InitialiseSummary initialiseCase(const std::string& dir, bool overwrite)
     const double t0 = control.getOrDefault<double>("startTime", 0.0);
     const std::string start = timeName(t0);
     const Dictionary gridDict = readCaseFile(dir, "constant/grid");
-    const Grid grid(gridDict);
+    const Grid<2> grid(gridDict);
     // Only checked here: a bad side type fails now, not in picSolver.
     const auto boundaries = readBoundaries(gridDict);
     const Dictionary materialsDict = readCaseFile(dir, "constant/materials");

@@ -17,7 +17,7 @@ namespace fs = std::filesystem;
 
 namespace {
 //- Map the material ids stored in a time directory onto the order of constant/materials.
-void remapMaterials(Particles& p, const std::vector<std::string>& stored,
+void remapMaterials(Particles<2>& p, const std::vector<std::string>& stored,
                     const std::vector<std::string>& current, const std::string& file)
 {
     std::vector<int> map(stored.size(), -1);
@@ -85,7 +85,7 @@ std::unique_ptr<Case> readCase(const RunOptions& options)
     const std::string startName = startTimeName(dir, options, *c.timeControl);
 
     c.gridDict = readCaseFile(dir, "constant/grid");
-    SolverInputs in{Grid(c.gridDict)};
+    SolverInputs<2> in{Grid<2>(c.gridDict)};
     in.boundaries = readBoundaries(c.gridDict);
     c.materialsDict = readCaseFile(dir, "constant/materials");
     in.materials = readMaterials(c.materialsDict);
@@ -109,7 +109,7 @@ std::unique_ptr<Case> readCase(const RunOptions& options)
     c.sortInterval = schemes.getOrDefault<long>("sortInterval", 100);
     if (c.sortInterval < 0) schemes.fail("sortInterval", "sortInterval must be >= 0 (0: never sort)");
     c.scheme = Registry<UpdateScheme>::select(c.schemeName, schemes, schemes, "updateScheme");
-    in.shape = Registry<ShapeFunction>::select(c.shapeName, schemes, schemes, "shapeFunction");
+    in.shape = Registry<ShapeFunction<2>>::select(c.shapeName, schemes, schemes, "shapeFunction");
     if (in.grid.axisymmetric()) {  // what the hoop terms are not yet written for
         if (!in.shape->servesAxisymmetric())
             schemes.fail("shapeFunction", "shapeFunction " + c.shapeName + " is not yet available with geometry "
@@ -129,7 +129,7 @@ std::unique_ptr<Case> readCase(const RunOptions& options)
     in.time = c.time;
 
     // The particles a stage holds back (a restart inside a fill) belong to the scene as well.
-    Particles dormant;
+    Particles<2> dormant;
     const fs::path dormantFile = fs::path(dir) / startName / "dormant.vtp";
     const Dictionary* stagesDict = controlDict.subDictPtr("stages");
     if (stagesDict && fs::exists(dormantFile)) {
@@ -167,11 +167,11 @@ std::unique_ptr<Case> readCase(const RunOptions& options)
         ContactScene scene{dir, bodyNames, {}};
         for (int b = 0; b < scene.nBodies(); ++b)
             scene.rigid.push_back(static_cast<std::size_t>(b) < in.rigidBodies.size() && in.rigidBodies[b]);
-        in.contact = ContactPass::New(contactDict, scene, in.grid);
+        in.contact = ContactPass<2>::New(contactDict, scene, in.grid);
         contactDict.warnUnused();
     }
-    c.solver = std::make_unique<MpmSolver>(std::move(in));
-    MpmSolver& solver = *c.solver;
+    c.solver = std::make_unique<MpmSolver<2>>(std::move(in));
+    MpmSolver<2>& solver = *c.solver;
 
     if (stagesDict) {
         StageSetup setup;
@@ -205,7 +205,7 @@ std::unique_ptr<Case> readCase(const RunOptions& options)
             c.functions.push_back(FunctionObject::New(fns->subDict(key), c.context));
             FunctionObject* f = c.functions.back().get();
             for (const StepPoint point : f->stepPoints())
-                solver.addHook(point, [f, point](const MpmSolver& s) { f->at(point, s); });
+                solver.addHook(point, [f, point](const MpmSolver<2>& s) { f->at(point, s); });
         }
     // Their running state where picSolver wrote the start directory (not picInit's 0/).
     const fs::path functionState = fs::path(dir) / startName / "uniform/functionObjects";

@@ -4,29 +4,31 @@
 
 namespace gpic {
 
-ContactPass::ContactPass(int nBodies, const Grid& grid) : fields_(static_cast<std::size_t>(nBodies))
+template <int D>
+ContactPass<D>::ContactPass(int nBodies, const Grid<D>& grid) : fields_(static_cast<std::size_t>(nBodies))
 {
     const auto nodes = static_cast<std::size_t>(grid.nNodes());
     for (auto& f : fields_) {
         f.mass.assign(nodes, 0.0);
-        f.momentum.assign(nodes, Vector2::Zero());
-        f.velocity.assign(nodes, Vector2::Zero());
-        f.force.assign(nodes, Vector2::Zero());
-        f.accel.assign(nodes, Vector2::Zero());
+        f.momentum.assign(nodes, Vector::Zero());
+        f.velocity.assign(nodes, Vector::Zero());
+        f.force.assign(nodes, Vector::Zero());
+        f.accel.assign(nodes, Vector::Zero());
     }
 }
 
-void ContactPass::reset(const std::vector<int>& active)
+template <int D>
+void ContactPass<D>::reset(const std::vector<int>& active)
 {
     // Every step, before the scatter: threaded as Grid::resetFields, all bodies in one loop
     // (a parallel region each would cost more than the zeroing), with the arrays' pointers
     // in locals, which no store can alias.
     struct Arrays {
         double* mass;
-        Vector2* vectors[4];
+        Vector* vectors[4];
     };
     std::vector<Arrays> bodyArrays;
-    for (BodyField& f : fields_)
+    for (BodyField<D>& f : fields_)
         bodyArrays.push_back({f.mass.data(), {f.momentum.data(), f.velocity.data(), f.force.data(), f.accel.data()}});
     const Arrays* arrays = bodyArrays.data();
     const int* nodes = active.data();
@@ -35,23 +37,26 @@ void ContactPass::reset(const std::vector<int>& active)
         const int n = nodes[k];
         for (int b = 0; b < bodies; ++b) {
             arrays[b].mass[n] = 0.0;
-            for (Vector2* field : arrays[b].vectors) field[n].setZero();
+            for (Vector* field : arrays[b].vectors) field[n].setZero();
         }
     });
 }
 
-std::unique_ptr<ContactPass> ContactPass::New(const Dictionary& dict, const ContactScene& scene, const Grid& grid)
+template <int D>
+std::unique_ptr<ContactPass<D>> ContactPass<D>::New(const Dictionary& dict, const ContactScene& scene, const Grid<D>& grid)
 {
-    ContactParts parts;
-    parts.law = ContactLaw::New(dict, scene.bodyNames);
-    parts.normalsName = ContactNormals::typeName(dict);
-    parts.normals = ContactNormals::New(dict, scene);
+    ContactParts<D> parts;
+    parts.law = ContactLaw<D>::New(dict, scene.bodyNames);
+    parts.normalsName = ContactNormals<D>::typeName(dict);
+    parts.normals = ContactNormals<D>::New(dict, scene);
     parts.nBodies = scene.nBodies();
     parts.grid = &grid;
     if (!parts.law->needsBodyFields() || parts.nBodies < 2) return nullptr;
     // One algorithm is built in; `algorithm` names another from a user's library.
     const std::string algorithm = dict.found("algorithm") ? dict.get<std::string>("algorithm") : "multiField";
-    return Registry<ContactPass>::select(algorithm, dict, dict, parts, "algorithm");
+    return Registry<ContactPass<D>>::select(algorithm, dict, dict, parts, "algorithm");
 }
+
+template class ContactPass<2>;
 
 } // namespace gpic

@@ -6,32 +6,39 @@
 
 namespace gpic {
 
-GridCoupling::GridCoupling(CouplingParts& parts) : contact_(std::move(parts.contact)), bodies_(contact_.get()) {}
+template <int D>
+GridCoupling<D>::GridCoupling(CouplingParts<D>& parts) : contact_(std::move(parts.contact)), bodies_(contact_.get()) {}
 
-std::unique_ptr<GridCoupling> GridCoupling::New(CouplingParts& parts)
+template <int D>
+std::unique_ptr<GridCoupling<D>> GridCoupling<D>::New(CouplingParts<D>& parts)
 {
     const bool anyRigid = parts.rigid && !parts.rigid->empty();
     const std::string type = parts.contact ? "multiField" : (anyRigid ? "singleFieldRigidBodies" : "singleField");
-    auto& table = Registry<GridCoupling>::table();
+    auto& table = Registry<GridCoupling<D>>::table();
     const auto it = table.find(type);
     if (it == table.end())
         throw RunError("grid coupling '" + type + "' is not registered (contact needs libcontact); registered: " +
-                       Registry<GridCoupling>::validChoices());
+                       Registry<GridCoupling<D>>::validChoices());
     return it->second.factory(parts);
 }
 
-void GridCoupling::attach(Grid& grid, const Drivers& rigid)
+template <int D>
+void GridCoupling<D>::attach(Grid<D>& grid, const Drivers& rigid)
 {
     const auto nodes = static_cast<std::size_t>(grid.nNodes());
-    grid.fContact.assign(!rigid.empty() || bodies_ ? nodes : 0, Vector2::Zero());
-    loads_.assign(bodies_ ? static_cast<std::size_t>(bodies_->nBodies()) : rigid.size(), RigidBodyLoad{});
+    grid.fContact.assign(!rigid.empty() || bodies_ ? nodes : 0, Vector::Zero());
+    loads_.assign(bodies_ ? static_cast<std::size_t>(bodies_->nBodies()) : rigid.size(), RigidBodyLoad<D>{});
 }
 
-void GridCoupling::constrainFiltered(EngineView& e, int, std::vector<Vector2>& w, double) const
+template <int D>
+void GridCoupling<D>::constrainFiltered(EngineView<D>& e, int, std::vector<Vector>& w, double) const
 {
     e.sides.constrain(w);
 }
 
-void GridCoupling::forEachRigidNode(const Grid&, const Drivers&, const std::function<void(int, int)>&) const {}
+template <int D>
+void GridCoupling<D>::forEachRigidNode(const Grid<D>&, const Drivers&, const std::function<void(int, int)>&) const {}
+
+template class GridCoupling<2>;
 
 } // namespace gpic

@@ -5,28 +5,33 @@
 
 namespace gpic {
 
-GPIC_REGISTER(GridCoupling, SingleFieldRigidBodies, "singleFieldRigidBodies");
+GPIC_REGISTER_DIM(GridCoupling, SingleFieldRigidBodies, 2, "singleFieldRigidBodies")
 
-SingleFieldRigidBodies::SingleFieldRigidBodies(CouplingParts& parts) : SingleField(parts)
+template <int D>
+SingleFieldRigidBodies<D>::SingleFieldRigidBodies(CouplingParts<D>& parts) : SingleField<D>(parts)
 {
     rigidNodes_.allocate(static_cast<std::size_t>(parts.grid->nNodes()));
-    driven_ = &rigidNodes_;
+    this->driven_ = &rigidNodes_;
 }
 
-void SingleFieldRigidBodies::constrainFiltered(EngineView& e, int f, std::vector<Vector2>& w, double dt) const
+template <int D>
+void SingleFieldRigidBodies<D>::constrainFiltered(EngineView<D>& e, int f, std::vector<Vector>& w, double dt) const
 {
-    SingleField::constrainFiltered(e, f, w, dt);
+    SingleField<D>::constrainFiltered(e, f, w, dt);
     // A node a rigid tool drives keeps the velocity the update started from.
-    const Grid& grid = e.grid;
+    const Grid<D>& grid = e.grid;
     for (int n : grid.active)
         if (rigidNodes_.bodyAt(n) >= 0) w[n] = grid.velocity[n] - dt * grid.accel[n];
 }
 
-void SingleFieldRigidBodies::forEachRigidNode(const Grid& grid, const Drivers&,
+template <int D>
+void SingleFieldRigidBodies<D>::forEachRigidNode(const Grid<D>& grid, const typename GridCoupling<D>::Drivers&,
                                               const std::function<void(int, int)>& visit) const
 {
     for (int n : grid.active)
         if (rigidNodes_.bodyAt(n) >= 0) visit(n, rigidNodes_.bodyAt(n));
 }
+
+template class SingleFieldRigidBodies<2>;
 
 } // namespace gpic

@@ -15,29 +15,54 @@ namespace gpic {
 
 namespace {
 //- sigma : eps for plane-strain tensors (the shear pair counted twice).
-inline double contract(const SymTensor& s, double eXX, double eYY, double eZZ, double eXY)
+inline double contract(const Space<2>::SymTensor& s, double eXX, double eYY, double eZZ, double eXY)
 {
     return s[XX] * eXX + s[YY] * eYY + s[ZZ] * eZZ + 2.0 * s[XY] * eXY;
 }
-inline double contract(const SymTensor& s, const SymTensor& e)
+//- sigma : eps (each shear pair counted twice).
+template <class Tensor> double contract(const Tensor& s, const Tensor& e)
 {
-    return contract(s, e[XX], e[YY], e[ZZ], e[XY]);
+    double work = s[XX] * e[XX] + s[YY] * e[YY] + s[ZZ] * e[ZZ] + 2.0 * s[XY] * e[XY];
+    for (int c = Space<2>::nSym; c < s.size(); ++c) work += 2.0 * s[c] * e[c];
+    return work;
+}
+//- sigma grad N, the force a particle's stress puts on a node per unit volume (eq. 2.3.8).
+inline Space<2>::Vector stressOnNode(const Space<2>::SymTensor& s, const Space<2>::Vector& dN)
+{
+    return Space<2>::Vector(s[XX] * dN.x() + s[XY] * dN.y(), s[XY] * dN.x() + s[YY] * dN.y());
+}
+inline Space<3>::Vector stressOnNode(const Space<3>::SymTensor& s, const Space<3>::Vector& dN)
+{
+    return Space<3>::Vector(s[XX] * dN[0] + s[XY] * dN[1] + s[XZ] * dN[2], s[XY] * dN[0] + s[YY] * dN[1] + s[YZ] * dN[2],
+                            s[XZ] * dN[0] + s[YZ] * dN[1] + s[ZZ] * dN[2]);
+}
+//- The mean normal stress the cell means replace (the in-plane one in a plane scene, where
+//  sigma33 follows from the plane-strain condition).
+template <class Tensor> double meanNormalStress(const Tensor& s)
+{
+    if constexpr (Tensor::RowsAtCompileTime == Space<2>::nSym)
+        return 0.5 * (s[XX] + s[YY]);
+    else
+        return (s[XX] + s[YY] + s[ZZ]) / 3.0;
 }
 } // namespace
 
-void MpmSolver::useTransfer(std::unique_ptr<ParticleTransfer> transfer)
+template <int D>
+void MpmSolver<D>::useTransfer(std::unique_ptr<ParticleTransfer> transfer)
 {
     transfer_ = std::move(transfer);
     matchAffine();
 }
 
-void MpmSolver::matchAffine()
+template <int D>
+void MpmSolver<D>::matchAffine()
 {
     if (transfer_->affine()) particles_.carry(FieldGroup::affine);  // C_p zero for particles that had none
     else particles_.drop(FieldGroup::affine);
 }
 
-MpmSolver::MpmSolver(SolverInputs in)
+template <int D>
+MpmSolver<D>::MpmSolver(SolverInputs<D> in)
     : grid_(std::move(in.grid)), particles_(std::move(in.particles)), materials_(std::move(in.materials)),
       shape_(std::move(in.shape)), sides_(std::move(in.boundaries), grid_), strips_(grid_),
       transfer_(std::make_unique<FlipTransfer>(Dictionary::parse("transfer FLIP;", "the seed's FLIP")))
@@ -52,69 +77,77 @@ MpmSolver::MpmSolver(SolverInputs in)
     // In an axisymmetric scene the hoop pass takes the cell means over the three normal
     // components (AxisymmetricHoop.H): the in-plane means alone would leave the hoop strain
     // constrained at every particle.
-    if (in.cellMeanDilatation && !in.grid.axisymmetric()) cellMean_ = std::make_unique<CellMeanDilatation>();
+    if (in.cellMeanDilatation && !in.grid.axisymmetric()) cellMean_ = std::make_unique<CellMeanDilatation<D>>();
     time_ = in.time;
     removedMass_ = in.removedMass;
     if (!in.rigidBodies.empty()) attachRigidBodies(std::move(in.rigidBodies));
     coupleGrid(std::move(in.contact));
     // The passes last: the loads select particles in their final order.
-    PassScene scene{grid_, particles_, materials_, sides_, *shape_, *transfer_, in};
+    PassScene<D> scene{grid_, particles_, materials_, sides_, *shape_, *transfer_, in};
     for (auto& pass : assemblePasses(scene)) addPass(std::move(pass));
-    affine_ = find<AffineVelocity>();
-    filter_ = find<XpicFilter>();
+    affine_ = find<AffineVelocity<D>>();
+    filter_ = find<XpicFilter<D>>();
     setUpPassParticles();
 }
 
-void MpmSolver::coupleGrid(std::unique_ptr<ContactPass> contact)
+template <int D>
+void MpmSolver<D>::coupleGrid(std::unique_ptr<ContactPass<D>> contact)
 {
-    CouplingParts parts;
+    CouplingParts<D> parts;
     parts.grid = &grid_;
     parts.contact = std::move(contact);
     parts.rigid = &rigid_;
-    coupling_ = GridCoupling::New(parts);
+    coupling_ = GridCoupling<D>::New(parts);
     coupling_->attach(grid_, rigid_);
 }
 
-const std::vector<Vector2>& MpmSolver::affineCentres() const
+template <int D>
+const std::vector<typename Space<D>::Vector>& MpmSolver<D>::affineCentres() const
 {
-    static const std::vector<Vector2> none;
+    static const std::vector<Vector> none;
     return affine_ ? affine_->centres() : none;
 }
 
-EngineView MpmSolver::view()
+template <int D>
+EngineView<D> MpmSolver<D>::view()
 {
-    return EngineView{grid_,    particles_, weights_, strips_,       sides_,      rigid_,          *coupling_,
+    return EngineView<D>{grid_,    particles_, weights_, strips_,       sides_,      rigid_,          *coupling_,
                       *transfer_, gravity_,  time_,    damping_,      minNodalMass_, massScale_, affineCentres(),
                       timers_};
 }
 
-void MpmSolver::addPass(std::unique_ptr<EnginePass> pass)
+template <int D>
+void MpmSolver<D>::addPass(std::unique_ptr<EnginePass<D>> pass)
 {
     for (const StepPoint point : pass->points()) passAt_[static_cast<std::size_t>(point)].push_back(pass.get());
     passes_.push_back(std::move(pass));
 }
 
-bool MpmSolver::passesHoldIndices() const
+template <int D>
+bool MpmSolver<D>::passesHoldIndices() const
 {
     return std::any_of(passes_.begin(), passes_.end(), [](const auto& pass) { return pass->holdsParticleIndices(); });
 }
 
-void MpmSolver::renumberPasses(const std::vector<std::size_t>& newIndex)
+template <int D>
+void MpmSolver<D>::renumberPasses(const std::vector<std::size_t>& newIndex)
 {
     for (auto& pass : passes_) pass->renumber(newIndex, particles_.size());
 }
 
-void MpmSolver::reach(StepPoint point, double dt)
+template <int D>
+void MpmSolver<D>::reach(StepPoint point, double dt)
 {
     const auto& passes = passAt_[static_cast<std::size_t>(point)];
     if (!passes.empty()) {
-        EngineView engine = view();
-        for (EnginePass* pass : passes) pass->at(point, engine, dt);
+        EngineView<D> engine = view();
+        for (EnginePass<D>* pass : passes) pass->at(point, engine, dt);
     }
     hooks_.call(point, *this);
 }
 
-double MpmSolver::passTimeStep() const
+template <int D>
+double MpmSolver<D>::passTimeStep() const
 {
     double dt = 1e300;
     for (std::size_t m = 0; m < materials_.size(); ++m)
@@ -122,7 +155,8 @@ double MpmSolver::passTimeStep() const
     return dt;
 }
 
-double MpmSolver::passTimeStep(std::size_t m) const
+template <int D>
+double MpmSolver<D>::passTimeStep(std::size_t m) const
 {
     double dt = 1e300;
     for (const auto& pass : passes_)
@@ -130,14 +164,16 @@ double MpmSolver::passTimeStep(std::size_t m) const
     return dt;
 }
 
-std::string MpmSolver::passTimeStepName() const
+template <int D>
+std::string MpmSolver<D>::passTimeStepName() const
 {
     for (const auto& pass : passes_)
         if (!pass->stepLimitName().empty()) return pass->stepLimitName();
     return "";
 }
 
-void MpmSolver::setMassScaling(const MassScaling& scaling)
+template <int D>
+void MpmSolver<D>::setMassScaling(const MassScaling& scaling)
 {
     massScaling_ = scaling;
     massScale_.clear();
@@ -151,7 +187,8 @@ void MpmSolver::setMassScaling(const MassScaling& scaling)
     }
 }
 
-void MpmSolver::setUpParticles()
+template <int D>
+void MpmSolver<D>::setUpParticles()
 {
     // The arrays the materials declare; plastic strain only where a material writes it.
     bool plastic = false;
@@ -175,7 +212,8 @@ void MpmSolver::setUpParticles()
     minNodalMass_ = 1e-9 * lightest;
 }
 
-void MpmSolver::setUpPassParticles()
+template <int D>
+void MpmSolver<D>::setUpPassParticles()
 {
     bool polar = false;
     for (auto& pass : passes_) {
@@ -186,7 +224,8 @@ void MpmSolver::setUpPassParticles()
     if (!polar) particles_.drop(FieldGroup::polar);
 }
 
-void MpmSolver::reindex()
+template <int D>
+void MpmSolver<D>::reindex()
 {
     blocks_ = particles_.blocks();
     // Pieces of a fixed size: the material update then balances over any thread count.
@@ -200,10 +239,11 @@ void MpmSolver::reindex()
         if (driverOf(q)) rigidParticles_.push_back(q);
 }
 
-void MpmSolver::sortParticles()
+template <int D>
+void MpmSolver<D>::sortParticles()
 {
     auto timer = timers_.time("sort");
-    Particles& p = particles_;
+    Particles<D>& p = particles_;
     const auto n = static_cast<long>(p.size());
     sortKey_.resize(p.size());
     const long nCells = grid_.nCells();
@@ -226,21 +266,23 @@ void MpmSolver::sortParticles()
     reindex();
 }
 
-void MpmSolver::computeWeights()
+template <int D>
+void MpmSolver<D>::computeWeights()
 {
     auto timer = timers_.time("shapeFunctions");
-    const Particles& p = particles_;
+    const Particles<D>& p = particles_;
     const auto n = static_cast<long>(p.size());
     // The lowest-numbered particle outside the grid, for a stable message.
     const long first = parallelFirst(n, [&](long q) {
-        return !grid_.contains(p.x[q]) || !std::isfinite(p.x[q].x()) || !std::isfinite(p.x[q].y());
+        return !grid_.contains(p.x[q]) || !p.x[q].allFinite();
     });
     if (first < n) {
         const auto q = static_cast<std::size_t>(first);
         std::ostringstream msg;
         msg << "particle " << p.id[q] << " (body " << p.body[q] << ", material "
-            << materials_[p.material[q]]->name() << ") at (" << p.x[q].x() << " "
-            << p.x[q].y() << ") is outside the grid [" << grid_.origin().transpose()
+            << materials_[p.material[q]]->name() << ") at (";
+        for (int a = 0; a < D; ++a) msg << (a ? " " : "") << p.x[q][a];
+        msg << ") is outside the grid [" << grid_.origin().transpose()
             << "] - [" << grid_.upper().transpose() << "]";
         throw RunError(msg.str());
     }
@@ -249,27 +291,30 @@ void MpmSolver::computeWeights()
     if (cellMean_) cellMean_->assign(grid_, p, [&](std::size_t q) { return driverOf(q) != nullptr; });
 }
 
-void MpmSolver::particlesToGrid()
+template <int D>
+void MpmSolver<D>::particlesToGrid()
 {
     auto timer = timers_.time("particlesToGrid");
-    EngineView engine = view();
+    EngineView<D> engine = view();
     coupling_->particlesToGrid(engine, time_);
     reach(StepPoint::afterParticlesToGrid, 0.0);
 }
 
-void MpmSolver::setRigidBodies(std::vector<std::unique_ptr<RigidBodyDriver>> drivers)
+template <int D>
+void MpmSolver<D>::setRigidBodies(std::vector<std::unique_ptr<RigidBodyDriver<D>>> drivers)
 {
     attachRigidBodies(std::move(drivers));
     coupleGrid(coupling_->releaseContact());  // a rigid body may come or go: the strategy with it
 }
 
-void MpmSolver::attachRigidBodies(std::vector<std::unique_ptr<RigidBodyDriver>> drivers)
+template <int D>
+void MpmSolver<D>::attachRigidBodies(std::vector<std::unique_ptr<RigidBodyDriver<D>>> drivers)
 {
     // Keep the table only when some body is rigid: otherwise no rigid pass runs at all.
     const bool anyRigid = std::any_of(drivers.begin(), drivers.end(), [](const auto& d) { return d != nullptr; });
-    rigid_ = anyRigid ? std::move(drivers) : std::vector<std::unique_ptr<RigidBodyDriver>>{};
+    rigid_ = anyRigid ? std::move(drivers) : std::vector<std::unique_ptr<RigidBodyDriver<D>>>{};
     if (anyRigid) {
-        const auto info = RigidBodyInfo::ofBodies(particles_, rigid_.size(), gravity_);
+        const auto info = RigidBodyInfo<D>::ofBodies(particles_, rigid_.size(), gravity_);
         for (std::size_t b = 0; b < rigid_.size(); ++b)
             if (rigid_[b]) rigid_[b]->attach(info[b]);
     }
@@ -277,7 +322,8 @@ void MpmSolver::attachRigidBodies(std::vector<std::unique_ptr<RigidBodyDriver>> 
     reindex();
 }
 
-void MpmSolver::markDeformingMaterials()
+template <int D>
+void MpmSolver<D>::markDeformingMaterials()
 {
     materialDeforms_.assign(materials_.size(), 0);
     bool any = false;
@@ -291,40 +337,40 @@ void MpmSolver::markDeformingMaterials()
     if (!any) materialDeforms_.assign(materials_.size(), 1);
 }
 
-void MpmSolver::computeForces()
+template <int D>
+void MpmSolver<D>::computeForces()
 {
     auto timer = timers_.time("forces");
-    const Particles& p = particles_;
+    const Particles<D>& p = particles_;
     const int stride = weights_.stride;
     if (cellMean_)
-        cellMean_->average(p, [&](std::size_t q) { return 0.5 * (p.sigma[q][XX] + p.sigma[q][YY]); }, cellMeanValue_);
+        cellMean_->average(p, [&](std::size_t q) { return meanNormalStress(p.sigma[q]); }, cellMeanValue_);
     // The arrays' pointers in locals: Eigen's SSE stores may alias anything, and the compiler
     // would otherwise reload every vector's data pointer after each addition into a node.
     const int* node = weights_.node.data();
     const double* N = weights_.N.data();
-    const Vector2* dNs = weights_.dN.data();
-    Vector2* fIntAt = grid_.fInt.data();
-    Vector2* fExtAt = grid_.fExt.data();
-    const Vector2 g = gravity_;
+    const Vector* dNs = weights_.dN.data();
+    Vector* fIntAt = grid_.fInt.data();
+    Vector* fExtAt = grid_.fExt.data();
+    const Vector g = gravity_;
     strips_.forEach([&, node, N, dNs, fIntAt, fExtAt, g, stride](std::size_t q) {
         // A rigid body carries no stress: its nodes are driven instead.
         SymTensor s = driverOf(q) ? SymTensor::Zero() : p.sigma[q];
-        if (cellMean_) {  // the cell's mean in-plane pressure in place of the particle's own
-            const double shift = cellMeanValue_[q] - 0.5 * (s[XX] + s[YY]);
-            s[XX] += shift;
-            s[YY] += shift;
+        if (cellMean_) {  // the cell's mean pressure (in-plane in 2D) in place of the particle's own
+            const double shift = cellMeanValue_[q] - meanNormalStress(s);
+            for (int c = 0; c < D; ++c) s[c] += shift;
         }
         const std::size_t k0 = q * stride;
-        BodyField* body = coupling_->bodyField(p.body[q]);
-        Vector2* bodyForce = body ? body->force.data() : nullptr;  // in a local, as the others
+        BodyField<D>* body = coupling_->bodyField(p.body[q]);
+        Vector* bodyForce = body ? body->force.data() : nullptr;  // in a local, as the others
         const double Vp = p.V[q], mp = p.m[q];
         for (int a = 0; a < stride; ++a) {
             const int n = node[k0 + a];
             if (n < 0) continue;
-            const Vector2 dN = dNs[k0 + a];
+            const Vector dN = dNs[k0 + a];
             // eq. 2.3.8: F_int = -sum_p V_p B_p^T sigma_p
-            const Vector2 fInt = -Vp * Vector2(s[XX] * dN.x() + s[XY] * dN.y(), s[XY] * dN.x() + s[YY] * dN.y());
-            const Vector2 fExt = (N[k0 + a] * mp) * g;  // eq. 2.3.9; loads: AppliedLoads
+            const Vector fInt = -Vp * stressOnNode(s, dN);
+            const Vector fExt = (N[k0 + a] * mp) * g;  // eq. 2.3.9; loads: AppliedLoads
             fIntAt[n] += fInt;
             fExtAt[n] += fExt;
             // With a contact pass the same terms go to the body's own field too.
@@ -334,31 +380,33 @@ void MpmSolver::computeForces()
     reach(StepPoint::afterForces, 0.0);
 }
 
-void MpmSolver::updateGrid(double dt)
+template <int D>
+void MpmSolver<D>::updateGrid(double dt)
 {
     deltaT_ = dt;
     reach(StepPoint::beforeGridUpdate, dt);
-    EngineView engine = view();
+    EngineView<D> engine = view();
     coupling_->updateGrid(engine, time_ + dt, dt);
     reach(StepPoint::afterGridUpdate, dt);
 }
 
-void MpmSolver::updateStress(double dt)
+template <int D>
+void MpmSolver<D>::updateStress(double dt)
 {
-    Particles& p = particles_;
+    Particles<D>& p = particles_;
     const auto nParticles = static_cast<long>(p.size());
     {
         auto timer = timers_.time("strain");
         const int stride = weights_.stride;
         const int* node = weights_.node.data();  // in locals, as in gridToParticles
-        const Vector2* dNw = weights_.dN.data();
+        const Vector* dNw = weights_.dN.data();
         // Velocity gradient L_ab = sum_i v_i,a dN_i/dx_b (B v of eq. 2.4.5, plus spin).
         const auto velocityGradient = [&, node, dNw, stride](std::size_t q) {
-            PlaneSpace::Gradient L = PlaneSpace::Gradient::Zero();
+            Gradient L = Gradient::Zero();
             if (driverOf(q)) return L;  // rigid: no strain, no spin, no volume change
             const std::size_t k0 = q * stride;
             // With a contact pass each body deforms with its own velocity field.
-            const Vector2* velocity = coupling_->velocity(grid_, coupling_->fieldOf(p.body[q])).data();
+            const Vector* velocity = coupling_->velocity(grid_, coupling_->fieldOf(p.body[q])).data();
             for (int a = 0; a < stride; ++a) {
                 const int n = node[k0 + a];
                 if (n < 0) continue;
@@ -366,26 +414,38 @@ void MpmSolver::updateStress(double dt)
             }
             return L;
         };
-        const auto strainIncrement = [&](std::size_t q, const PlaneSpace::Gradient& L) {
-            // Kept as scalars: reading freshly stored components back as a pair stalls on
-            // store forwarding (a third of this pass).
-            const double dXX = dt * L(0, 0), dYY = dt * L(1, 1), dZZ = 0.0 /* plane strain */,
-                         dXY = 0.5 * dt * (L(0, 1) + L(1, 0));
-            SymTensor& de = p.dEps[q];
-            de[XX] = dXX;
-            de[YY] = dYY;
-            de[ZZ] = dZZ;
-            de[XY] = dXY;
-            p.dOmega[q] = 0.5 * dt * (L(0, 1) - L(1, 0));
-            SymTensor& eps = p.eps[q];
-            eps[XX] += dXX;
-            eps[YY] += dYY;
-            eps[ZZ] += dZZ;
-            eps[XY] += dXY;
-            // Volume follows the deformation: V_{t+1} = det(I + dt L) V_t.
-            p.V[q] *= (1.0 + dt * L(0, 0)) * (1.0 + dt * L(1, 1)) - dt * dt * L(0, 1) * L(1, 0);
-            // Stress work by the trapezoidal rule (first half): an energy measure valid for every material.
-            p.work[q] += 0.5 * p.V[q] * contract(p.sigma[q], dXX, dYY, dZZ, dXY);
+        const auto strainIncrement = [&](std::size_t q, const Gradient& L) {
+            if constexpr (D == 3) {
+                SymTensor& de = p.dEps[q];
+                de << dt * L(0, 0), dt * L(1, 1), dt * L(2, 2), 0.5 * dt * (L(0, 1) + L(1, 0)),
+                    0.5 * dt * (L(1, 2) + L(2, 1)), 0.5 * dt * (L(0, 2) + L(2, 0));
+                // The spin's components in the order of the shears (W12, W23, W13), JaumannRate.H.
+                p.dOmega[q] = typename Space<D>::Spin(0.5 * dt * (L(0, 1) - L(1, 0)), 0.5 * dt * (L(1, 2) - L(2, 1)),
+                                                      0.5 * dt * (L(0, 2) - L(2, 0)));
+                p.eps[q] += de;
+                p.V[q] *= (Gradient::Identity() + dt * L).determinant();  // V_{t+1} = det(I + dt L) V_t
+                p.work[q] += 0.5 * p.V[q] * contract(p.sigma[q], de);
+            } else {
+                // Kept as scalars: reading freshly stored components back as a pair stalls on
+                // store forwarding (a third of this pass).
+                const double dXX = dt * L(0, 0), dYY = dt * L(1, 1), dZZ = 0.0 /* plane strain */,
+                             dXY = 0.5 * dt * (L(0, 1) + L(1, 0));
+                SymTensor& de = p.dEps[q];
+                de[XX] = dXX;
+                de[YY] = dYY;
+                de[ZZ] = dZZ;
+                de[XY] = dXY;
+                p.dOmega[q] = 0.5 * dt * (L(0, 1) - L(1, 0));
+                SymTensor& eps = p.eps[q];
+                eps[XX] += dXX;
+                eps[YY] += dYY;
+                eps[ZZ] += dZZ;
+                eps[XY] += dXY;
+                // Volume follows the deformation: V_{t+1} = det(I + dt L) V_t.
+                p.V[q] *= (1.0 + dt * L(0, 0)) * (1.0 + dt * L(1, 1)) - dt * dt * L(0, 1) * L(1, 0);
+                // Stress work by the trapezoidal rule (first half): an energy measure valid for every material.
+                p.work[q] += 0.5 * p.V[q] * contract(p.sigma[q], dXX, dYY, dZZ, dXY);
+            }
         };
         if (!cellMean_) {
             parallelFor(nParticles, [&](long q) { strainIncrement(q, velocityGradient(q)); });
@@ -396,8 +456,8 @@ void MpmSolver::updateStress(double dt)
             cellMean_->average(p, [&](std::size_t q) { return velocityGradient_[q].trace(); }, cellMeanValue_);
             parallelFor(nParticles, [&](long q) {
                 // The cell's mean dilatation rate in place of the particle's own; shear and spin kept.
-                PlaneSpace::Gradient& L = velocityGradient_[q];
-                L.diagonal().array() += 0.5 * (cellMeanValue_[q] - L.trace());
+                Gradient& L = velocityGradient_[q];
+                L.diagonal().array() += (1.0 / D) * (cellMeanValue_[q] - L.trace());
                 strainIncrement(q, L);
             });
         }
@@ -413,11 +473,12 @@ void MpmSolver::updateStress(double dt)
     reach(StepPoint::afterStressUpdate, dt);
 }
 
-void MpmSolver::gridToParticles(double dt)
+template <int D>
+void MpmSolver<D>::gridToParticles(double dt)
 {
     reach(StepPoint::beforeGridToParticles, dt);
     auto timer = timers_.time("gridToParticles");
-    Particles& p = particles_;
+    Particles<D>& p = particles_;
     const int stride = weights_.stride;
     const auto nParticles = static_cast<long>(p.size());
     const double flip = transfer_->flipShare(dt);
@@ -427,15 +488,15 @@ void MpmSolver::gridToParticles(double dt)
     const double* Nw = weights_.N.data();
     const LoopReport report = parallelForChecked(nParticles, [&, node, Nw, stride](long q) {
         if (driverOf(q)) return LoopMark::none;  // moved below
-        Vector2 vNew = Vector2::Zero(), a = Vector2::Zero(), vStar = Vector2::Zero();
+        Vector vNew = Vector::Zero(), a = Vector::Zero(), vStar = Vector::Zero();
         const std::size_t k0 = q * stride;
         // With a contact pass each body moves with its own corrected field (seed G.4 steps 3-4).
         const int f = coupling_->fieldOf(p.body[q]);
-        const std::vector<Vector2>& velocityField = coupling_->velocity(grid_, f);
-        const Vector2* velocity = velocityField.data();
-        const Vector2* accel = coupling_->accel(grid_, f).data();
+        const std::vector<Vector>& velocityField = coupling_->velocity(grid_, f);
+        const Vector* velocity = velocityField.data();
+        const Vector* accel = coupling_->accel(grid_, f).data();
         const bool xpic = filter_ != nullptr;
-        const Vector2* star = xpic ? filter_->field(f).data() : nullptr;
+        const Vector* star = xpic ? filter_->field(f).data() : nullptr;
         for (int k = 0; k < stride; ++k) {
             const int n = node[k0 + k];
             if (n < 0) continue;
@@ -451,14 +512,14 @@ void MpmSolver::gridToParticles(double dt)
         // velocity beyond what its nodes carry (the FLIP null space, e.g. at a wall that stops
         // its nodes) then decays instead of persisting. PIC and APIC: share 0.
         else p.v[q] = flip * (p.v[q] + dt * a) + (1.0 - flip) * vNew;
-        const bool failed = !std::isfinite(p.v[q].x() + p.v[q].y());
+        const bool failed = !std::isfinite(p.v[q].sum());
         const bool returned = !grid_.contains(p.x[q]) && sides_.keepInsideWalls(grid_, p.x[q], p.v[q]);
         return failed ? LoopMark::failure : (returned ? LoopMark::noted : LoopMark::none);
     });
     wallReturns_ += static_cast<std::size_t>(report.notes);
     const long firstBad = report.firstFailure;
     for (std::size_t q : rigidParticles_) {  // drivers cache their motion: serial
-        const RigidBodyDriver* body = driverOf(q);
+        const RigidBodyDriver<D>* body = driverOf(q);
         p.x[q] = body->move(time_, dt, p.x[q]);
         p.v[q] = body->velocity(time_ + dt, p.x[q]);
     }
@@ -470,49 +531,56 @@ void MpmSolver::gridToParticles(double dt)
     reach(StepPoint::afterGridToParticles, dt);
 }
 
-void MpmSolver::endStep(double dt)
+template <int D>
+void MpmSolver<D>::endStep(double dt)
 {
     advanceRigidBodies(dt);
     removeOutflow();  // particles gone through an opening (silo outlet)
     reach(StepPoint::endOfStep, dt);
 }
 
-void MpmSolver::advanceRigidBodies(double dt)
+template <int D>
+void MpmSolver<D>::advanceRigidBodies(double dt)
 {
     for (std::size_t b = 0; b < rigid_.size(); ++b)
         if (rigid_[b]) rigid_[b]->advance(time_, dt, coupling_->loads()[b]);
 }
 
-void MpmSolver::remapVelocity(double dt)
+template <int D>
+void MpmSolver<D>::remapVelocity(double dt)
 {
     auto timer = timers_.time("particlesToGrid");
-    EngineView engine = view();
+    EngineView<D> engine = view();
     coupling_->remapVelocity(engine, time_ + dt, dt);
     reach(StepPoint::afterRemap, dt);  // APIC: C_p from the remapped velocity (AffineVelocity)
 }
 
-double MpmSolver::maxParticleSpeed() const
+template <int D>
+double MpmSolver<D>::maxParticleSpeed() const
 {
     // One square root, of the largest |v|^2: the same value (the root is monotone and
     // correctly rounded), without a root per particle and step.
     return std::sqrt(parallelMax(static_cast<long>(particles_.size()), [&](long q) { return particles_.v[q].squaredNorm(); }));
 }
 
-double MpmSolver::stepLength() const
+template <int D>
+double MpmSolver<D>::stepLength() const
 {
     double length = grid_.minCellSize();
-    const DeformingParticles deforms{materialDeforms_, rigid_};
+    const DeformingParticles<D> deforms{materialDeforms_, rigid_};
     for (const auto& pass : passes_) length = std::min(length, pass->stepLength(grid_, particles_, deforms));
     return length;
 }
 
-double MpmSolver::criticalTimeStep() const
+template <int D>
+double MpmSolver<D>::criticalTimeStep() const
 {
     const double dt = stepLength() / (maxWaveSpeed() + maxParticleSpeed());
     return std::min(dt, passTimeStep());
 }
 
-double MpmSolver::maxWaveSpeed() const
+template <int D>
+double MpmSolver<D>::maxWaveSpeed() const
 {
     double c = 0;
     for (std::size_t m = 0; m < materials_.size(); ++m)
@@ -520,35 +588,38 @@ double MpmSolver::maxWaveSpeed() const
     return c;
 }
 
-double MpmSolver::waveSpeed(std::size_t m) const
+template <int D>
+double MpmSolver<D>::waveSpeed(std::size_t m) const
 {
     const double c = materials_[m]->waveSpeed();
     return massScale_.empty() ? c : c / std::sqrt(massScale_[m]);  // c = sqrt(M / (s rho))
 }
 
-double MpmSolver::bytesPerParticle() const
+template <int D>
+double MpmSolver<D>::bytesPerParticle() const
 {
     if (particles_.size() == 0) return 0.0;
     const std::size_t weights = weights_.node.capacity() * sizeof(int) + weights_.N.capacity() * sizeof(double) +
-                                weights_.dN.capacity() * sizeof(Vector2);
+                                weights_.dN.capacity() * sizeof(Vector);
     std::size_t passes = 0;
     for (const auto& pass : passes_) passes += pass->particleBytes();
     const std::size_t cellMeans = cellMean_ ? cellMean_->particleBytes() + cellMeanValue_.capacity() * sizeof(double) +
-                                                  velocityGradient_.capacity() * sizeof(PlaneSpace::Gradient)
+                                                  velocityGradient_.capacity() * sizeof(Gradient)
                                             : 0;
     return double(particles_.bytes() + weights + passes + cellMeans) / double(particles_.size());
 }
 
-std::size_t MpmSolver::removeOutflow()
+template <int D>
+std::size_t MpmSolver<D>::removeOutflow()
 {
     if (!sides_.hasOutlet()) return 0;
-    Particles& p = particles_;
+    Particles<D>& p = particles_;
     const auto n = static_cast<long>(p.size());
     const auto leaves = [&](std::size_t q) { return !grid_.contains(p.x[q]) && !driverOf(q) && sides_.leftThroughOpening(grid_, p.x[q]); };
     const long leaving = parallelCount(n, [&](long q) { return leaves(static_cast<std::size_t>(q)); });
     if (leaving == 0) return 0;
     // Keep the others in their order (blocks stay contiguous); tell the loads.
-    std::vector<std::size_t> kept, newIndex(p.size(), ParticleLoad::removedParticle);
+    std::vector<std::size_t> kept, newIndex(p.size(), ParticleLoad<D>::removedParticle);
     kept.reserve(p.size() - static_cast<std::size_t>(leaving));
     for (std::size_t q = 0; q < p.size(); ++q) {
         if (leaves(q)) {
@@ -563,5 +634,7 @@ std::size_t MpmSolver::removeOutflow()
     reindex();
     return static_cast<std::size_t>(leaving);
 }
+
+template class MpmSolver<2>;
 
 } // namespace gpic

@@ -9,7 +9,8 @@
 
 namespace gpic {
 
-void MpmSolver::replaceParticles(Particles particles)
+template <int D>
+void MpmSolver<D>::replaceParticles(Particles<D> particles)
 {
     if (passesHoldIndices())
         throw RunError("the applied loads of constant/loads hold particle indices: a stage may not "
@@ -20,7 +21,8 @@ void MpmSolver::replaceParticles(Particles particles)
     setUpPassParticles();
 }
 
-void MpmSolver::projectToGrid()
+template <int D>
+void MpmSolver<D>::projectToGrid()
 {
     // A failure here (a particle outside the grid) ends the run, hooks muted or not.
     hooks_.mute(true);
@@ -30,9 +32,14 @@ void MpmSolver::projectToGrid()
     hooks_.mute(false);
 }
 
-void MpmSolver::refreshOpenings()
+template <int D>
+void MpmSolver<D>::refreshOpenings()
 {
     sides_.refresh(grid_);
 }
+
+template void MpmSolver<2>::replaceParticles(Particles<2>);
+template void MpmSolver<2>::projectToGrid();
+template void MpmSolver<2>::refreshOpenings();
 
 } // namespace gpic

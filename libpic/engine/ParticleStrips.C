@@ -6,28 +6,43 @@
 
 namespace gpic {
 
-ParticleStrips::ParticleStrips(const Grid& grid)
-    : axis_(grid.nx() >= grid.ny() ? 0 : 1),
-      nStrips_(((axis_ == 0 ? grid.nx() : grid.ny()) + width - 1) / width)
+namespace {
+//- The axis of most cells (the first of equals): strips are cut across it.
+template <int D> int longestAxis(const Grid<D>& grid)
+{
+    int axis = 0;
+    for (int a = 1; a < D; ++a)
+        if (grid.cells(a) > grid.cells(axis)) axis = a;
+    return axis;
+}
+} // namespace
+
+template <int D>
+ParticleStrips<D>::ParticleStrips(const Grid<D>& grid)
+    : axis_(longestAxis(grid)), nStrips_((grid.cells(axis_) + width - 1) / width)
 {
     start_.assign(static_cast<std::size_t>(nStrips_) + 1, 0);
 }
 
-int ParticleStrips::stripOf(const Grid& grid, const Vector2& x) const
+template <int D>
+int ParticleStrips<D>::stripOf(const Grid<D>& grid, const Vector& x) const
 {
-    int i, j;
-    grid.cellOf(x, i, j);
-    return (axis_ == 0 ? i : j) / width;
+    return grid.cellOf(x)[axis_] / width;
 }
 
-long ParticleStrips::cellKey(const Grid& grid, const Vector2& x) const
+template <int D>
+long ParticleStrips<D>::cellKey(const Grid<D>& grid, const Vector& x) const
 {
-    int i, j;
-    grid.cellOf(x, i, j);
-    return axis_ == 0 ? long(i) * grid.ny() + j : long(j) * grid.nx() + i;
+    // The strip's axis first, then the others in axis order.
+    const typename Grid<D>::Index c = grid.cellOf(x);
+    long key = c[axis_];
+    for (int a = 0; a < D; ++a)
+        if (a != axis_) key = key * grid.cells(a) + c[a];
+    return key;
 }
 
-ParticleStrips::StripRun ParticleStrips::runOf(int colour, int t, int threads) const
+template <int D>
+typename ParticleStrips<D>::StripRun ParticleStrips<D>::runOf(int colour, int t, int threads) const
 {
     long total = 0;
     for (int s = colour; s < nStrips_; s += 2) total += start_[s + 1] - start_[s];
@@ -50,7 +65,8 @@ ParticleStrips::StripRun ParticleStrips::runOf(int colour, int t, int threads) c
     return run;
 }
 
-void ParticleStrips::assign(const Grid& grid, const Particles& p)
+template <int D>
+void ParticleStrips<D>::assign(const Grid<D>& grid, const Particles<D>& p)
 {
     const auto n = static_cast<long>(p.size());
     strip_.resize(p.size());
@@ -110,5 +126,7 @@ void ParticleStrips::assign(const Grid& grid, const Particles& p)
         }
     }
 }
+
+template class ParticleStrips<2>;
 
 } // namespace gpic

@@ -10,9 +10,9 @@ BodyMotion::BodyMotion(const Dictionary& dict, const RunContext& context)
     : FunctionObject(dict, context)
 {}
 
-void BodyMotion::write(const MpmSolver& solver, double time)
+void BodyMotion::write(const MpmSolver<2>& solver, double time)
 {
-    const Particles& p = solver.particles();
+    const Particles<2>& p = solver.particles();
     const std::size_t nBodies = std::max<std::size_t>(context().bodyNames.size(), 1);
     std::vector<double> mass(nBodies, 0), kinetic(nBodies, 0), strain(nBodies, 0);
     std::vector<Vector2> moment(nBodies, Vector2::Zero()), momentum(nBodies, Vector2::Zero());

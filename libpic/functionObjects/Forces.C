@@ -35,7 +35,7 @@ Forces::Forces(const Dictionary& dict, const RunContext& context)
     }
 }
 
-void Forces::start(const MpmSolver& solver, double)
+void Forces::start(const MpmSolver<2>& solver, double)
 {
     const auto& all = context().bodyNames;
     std::vector<std::string> rigid;
@@ -74,9 +74,9 @@ void Forces::start(const MpmSolver& solver, double)
     os << std::endl;
 }
 
-void Forces::write(const MpmSolver& solver, double time)
+void Forces::write(const MpmSolver<2>& solver, double time)
 {
-    const Particles& p = solver.particles();
+    const Particles<2>& p = solver.particles();
     const std::size_t nBodies = context().bodyNames.size();
     std::vector<double> mass(nBodies, 0.0);
     std::vector<Vector2> moved(nBodies, Vector2::Zero());
@@ -91,12 +91,12 @@ void Forces::write(const MpmSolver& solver, double time)
     os << time;
     for (int b : bodies_) {
         const auto k = static_cast<std::size_t>(b);
-        const RigidBodyLoad load = k < loads.size() ? loads[k] : RigidBodyLoad{};
+        const RigidBodyLoad<2> load = k < loads.size() ? loads[k] : RigidBodyLoad<2>{};
         const Vector2 d = mass[k] > 0.0 ? Vector2(moved[k] / mass[k]) : Vector2::Zero();
         os << ' ' << load.force.x() << ' ' << load.force.y() << ' ' << load.momentAbout(CofR_) << ' '
            << d.x() << ' ' << d.y();
     }
-    const Grid& grid = solver.grid();
+    const Grid<2>& grid = solver.grid();
     for (const auto& face : faces_) {
         const auto k = static_cast<std::size_t>(face.body);
         const Vector2 d = mass[k] > 0.0 ? Vector2(moved[k] / mass[k]) : Vector2::Zero();
@@ -116,7 +116,7 @@ void Forces::write(const MpmSolver& solver, double time)
     os << std::endl;  // readable while the run goes on
 }
 
-void Forces::at(StepPoint, const MpmSolver& solver)
+void Forces::at(StepPoint, const MpmSolver<2>& solver)
 {
     const auto& loads = solver.rigidBodyLoads();
     const double dt = solver.deltaT(), tMid = solver.time() + 0.5 * dt;

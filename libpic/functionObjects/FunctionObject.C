@@ -23,7 +23,7 @@ FunctionObject::FunctionObject(const Dictionary& dict, const RunContext& context
                          : 1)
 {}
 
-void FunctionObject::execute(const MpmSolver& solver, double time, long step)
+void FunctionObject::execute(const MpmSolver<2>& solver, double time, long step)
 {
     if (step % writeInterval_ == 0) write(solver, time);
 }

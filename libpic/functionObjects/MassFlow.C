@@ -23,9 +23,9 @@ MassFlow::MassFlow(const Dictionary& dict, const RunContext& context)
     bodies_ = bodyIds(dict, "bodies");
 }
 
-double MassFlow::massInRegion(const MpmSolver& solver) const
+double MassFlow::massInRegion(const MpmSolver<2>& solver) const
 {
-    const Particles& p = solver.particles();
+    const Particles<2>& p = solver.particles();
     double mass = 0;
     for (std::size_t q = 0; q < p.size(); ++q) {
         const bool counted = bodies_.empty() ? solver.rigidBody(p.body[q]) == nullptr
@@ -39,7 +39,7 @@ double MassFlow::massInRegion(const MpmSolver& solver) const
     return factor_ * mass;
 }
 
-void MassFlow::start(const MpmSolver& solver, double time)
+void MassFlow::start(const MpmSolver<2>& solver, double time)
 {
     factor_ = rowFactor(givenFactor_, solver.grid());
     std::ofstream& os = file("massFlow.dat");
@@ -67,7 +67,7 @@ void MassFlow::readState(const Dictionary& state)
     lastMass_ = state.get<double>("lastMass");
 }
 
-void MassFlow::write(const MpmSolver& solver, double time)
+void MassFlow::write(const MpmSolver<2>& solver, double time)
 {
     const double mass = massInRegion(solver), removed = factor_ * solver.removedMass();
     const double dt = time - lastTime_;

@@ -27,7 +27,7 @@ ToolFill::ToolFill(const Dictionary& dict, const RunContext& context)
     handle_ = reference_ + Vector2::UnitX();
 }
 
-void ToolFill::start(const MpmSolver& solver, double time)
+void ToolFill::start(const MpmSolver<2>& solver, double time)
 {
     if (!solver.rigidBody(body_))
         throw InputError(file_, line_, "toolFill " + name() + ": '" + bodyName_ +
@@ -47,18 +47,18 @@ Vector2 ToolFill::atStart(const Vector2& x, double c, double s) const
     return reference0_ + Vector2(c * r.x() + s * r.y(), -s * r.x() + c * r.y());
 }
 
-void ToolFill::at(StepPoint, const MpmSolver& solver)
+void ToolFill::at(StepPoint, const MpmSolver<2>& solver)
 {
-    const RigidBodyDriver* tool = solver.rigidBody(body_);
+    const RigidBodyDriver<2>* tool = solver.rigidBody(body_);
     const Vector2 before = reference_;
     reference_ = tool->move(solver.time(), solver.deltaT(), reference_);
     handle_ = tool->move(solver.time(), solver.deltaT(), handle_);
     travel_ += (reference_ - before).norm();
 }
 
-void ToolFill::write(const MpmSolver& solver, double time)
+void ToolFill::write(const MpmSolver<2>& solver, double time)
 {
-    const Particles& p = solver.particles();
+    const Particles<2>& p = solver.particles();
     const Vector2 e = handle_ - reference_;
     const double c = e.x() / e.norm(), s = e.y() / e.norm();  // the turn since the start
     double mass = 0;

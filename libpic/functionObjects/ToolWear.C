@@ -62,7 +62,7 @@ void ToolWear::spread(std::vector<double>& bins, double length, double s, double
     }
 }
 
-void ToolWear::start(const MpmSolver& solver, double time)
+void ToolWear::start(const MpmSolver<2>& solver, double time)
 {
     const std::string what = "toolWear " + name() + ": ";
     if (!solver.rigidBody(body_))
@@ -91,9 +91,9 @@ void ToolWear::start(const MpmSolver& solver, double time)
     if (!restarted()) write(solver, time);
 }
 
-void ToolWear::at(StepPoint point, const MpmSolver& solver)
+void ToolWear::at(StepPoint point, const MpmSolver<2>& solver)
 {
-    const RigidBodyDriver* tool = solver.rigidBody(body_);
+    const RigidBodyDriver<2>* tool = solver.rigidBody(body_);
     const double dt = solver.deltaT();
     if (point == StepPoint::afterGridToParticles) {
         // The faces move as the tool's particles just did (MpmSolver::gridToParticles).
@@ -103,11 +103,11 @@ void ToolWear::at(StepPoint point, const MpmSolver& solver)
         }
         return;
     }
-    const Grid& grid = solver.grid();
-    const ContactPass* contact = solver.contact();
+    const Grid<2>& grid = solver.grid();
+    const ContactPass<2>* contact = solver.contact();
     if (grid.fContact.empty() || !contact) return;
     const double tNew = solver.time() + dt;
-    const BodyField& toolField = contact->field(body_);
+    const BodyField<2>& toolField = contact->field(body_);
     for (auto& face : faces_) {
         const FaceBand band(face.from, face.to, grid.cellSize().maxCoeff());
         // A node's stretch of the face: the node spacing along it.
@@ -126,7 +126,7 @@ void ToolWear::at(StepPoint point, const MpmSolver& solver)
             Vector2 momentum = Vector2::Zero();
             for (int b = 0; b < contact->nBodies(); ++b) {
                 if (b == body_ || solver.rigidBody(b)) continue;
-                const BodyField& f = contact->field(b);
+                const BodyField<2>& f = contact->field(b);
                 m += f.mass[n];
                 momentum += f.mass[n] * f.velocity[n];
             }
@@ -137,7 +137,7 @@ void ToolWear::at(StepPoint point, const MpmSolver& solver)
     }
 }
 
-void ToolWear::write(const MpmSolver&, double time)
+void ToolWear::write(const MpmSolver<2>&, double time)
 {
     std::ofstream& os = file("wear.dat");
     std::ofstream& profile = file("wearProfile.dat");

@@ -13,21 +13,28 @@
 
 namespace gpic {
 
-const std::array<std::string, PlaneSpace::nFaces>& gridSideNames()
+const std::array<std::string, Space<3>::nFaces>& gridSideNames()
 {
-    static const std::array<std::string, PlaneSpace::nFaces> names{"left", "right", "bottom", "top"};
+    static const std::array<std::string, Space<3>::nFaces> names{"left", "right", "bottom", "top", "back", "front"};
     return names;
 }
 
 namespace {
-//- Refuse a grid of nx x ny cells whose nodes the machine cannot hold (or number).
-void checkMemory(const Dictionary& dict, long nx, long ny)
+//- Refuse a grid whose nodes the machine cannot hold (or number).
+template <int D> void checkMemory(const Dictionary& dict, const std::array<int, D>& n)
 {
     // What the nodes need before anything is allocated: a grid beyond the machine (or
     // beyond an int's node numbering) is an input error, not a bad_alloc in mid-setup.
-    const double nodes = double(nx + 1) * double(ny + 1);
+    double nodes = 1.0;
+    std::string cells = "nCells: ";
+    for (int a = 0; a < D; ++a) {
+        nodes *= double(n[a]) + 1.0;
+        cells += (a ? " x " : "") + std::to_string(n[a]);
+    }
+    cells += " cells";
     // The grid's own nodal arrays (Grid::allocate): mass, five vectors, the active flag and index.
-    constexpr double nodeBytes = sizeof(double) + 5 * sizeof(Vector2) + sizeof(unsigned char) + sizeof(int);
+    constexpr double nodeBytes =
+        sizeof(double) + 5 * sizeof(typename Space<D>::Vector) + sizeof(unsigned char) + sizeof(int);
     const double need = nodes * nodeBytes;
     const double have = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
     const auto size = [](double bytes) {
@@ -35,7 +42,6 @@ void checkMemory(const Dictionary& dict, long nx, long ny)
         s << std::setprecision(3) << (bytes >= 1e9 ? bytes / 1e9 : bytes / 1e6) << (bytes >= 1e9 ? " GB" : " MB");
         return s.str();
     };
-    const std::string cells = "nCells: " + std::to_string(nx) + " x " + std::to_string(ny) + " cells";
     if (nodes > double(std::numeric_limits<int>::max()))
         dict.fail("nCells", cells + " have " + std::to_string(static_cast<long long>(nodes)) +
                                 " nodes, more than the " + std::to_string(std::numeric_limits<int>::max()) +
@@ -47,27 +53,31 @@ void checkMemory(const Dictionary& dict, long nx, long ny)
 
 } // namespace
 
-Grid::Grid(const Dictionary& dict)
+template <int D> Grid<D>::Grid(const Dictionary& dict)
 {
-    origin_ = dict.get<Vector2>("origin");
+    origin_ = dict.get<Vector>("origin");
     const Entry* size = dict.findEntry("cellSize");
     if (size && size->tokens.size() == 1) {
         const double h = dict.getChecked<double>(
             "cellSize", [](const double& v) { return v > 0; }, "cellSize > 0");
-        h_ = Vector2(h, h);
+        h_ = Vector::Constant(h);
     } else {
-        h_ = dict.getChecked<Vector2>(
-            "cellSize", [](const Vector2& v) { return v.x() > 0 && v.y() > 0; },
-            "both cell sizes > 0");
+        h_ = dict.getChecked<Vector>(
+            "cellSize", [](const Vector& v) { return (v.array() > 0).all(); },
+            D == 2 ? "both cell sizes > 0" : "all three cell sizes > 0");
     }
     const auto n = dict.getChecked<std::vector<int>>(
-        "nCells", [](const std::vector<int>& v) { return v.size() == 2 && v[0] > 0 && v[1] > 0; },
-        "two positive cell counts (nx ny)");
-    checkMemory(dict, n[0], n[1]);
-    nx_ = n[0];
-    ny_ = n[1];
+        "nCells",
+        [](const std::vector<int>& v) {
+            return v.size() == std::size_t(D) && std::all_of(v.begin(), v.end(), [](int c) { return c > 0; });
+        },
+        D == 2 ? "two positive cell counts (nx ny)" : "three positive cell counts (nx ny nz)");
+    std::copy(n.begin(), n.end(), n_.begin());
+    checkMemory<D>(dict, n_);
     // x1 is the radius of a body of revolution: the grid may start on the axis, not across it.
-    axisymmetric_ = dict.getWordOrDefault("geometry", {"planeStrain", "axisymmetric"}, "planeStrain") == "axisymmetric";
+    const std::string geometry = D == 2 ? dict.getWordOrDefault("geometry", {"planeStrain", "axisymmetric"}, "planeStrain")
+                                        : dict.getWordOrDefault("geometry", {"threeD"}, "threeD");
+    axisymmetric_ = geometry == "axisymmetric";
     if (axisymmetric_ && origin_.x() < 0) {
         std::ostringstream msg;
         msg << "keyword 'origin' in dictionary " << dict.name() << ": with geometry axisymmetric x1 is the radius "
@@ -77,47 +87,50 @@ Grid::Grid(const Dictionary& dict)
     allocate();
 }
 
-Grid::Grid(const Vector2& origin, const Vector2& cellSize, int nx, int ny)
-    : origin_(origin), h_(cellSize), nx_(nx), ny_(ny)
+template <int D>
+Grid<D>::Grid(const Vector& origin, const Vector& cellSize, const Index& nCells) : origin_(origin), h_(cellSize), n_(nCells)
 {
     allocate();
 }
 
-void Grid::allocate()
+template <int D> void Grid<D>::allocate()
 {
-    const auto n = static_cast<std::size_t>(nNodes());
+    long long count = 1;
+    for (int a = 0; a < D; ++a) count *= n_[a] + 1;
+    nNodes_ = static_cast<int>(count);
+    const auto n = static_cast<std::size_t>(nNodes_);
     mass.assign(n, 0.0);
-    momentum.assign(n, Vector2::Zero());
-    velocity.assign(n, Vector2::Zero());
-    fInt.assign(n, Vector2::Zero());
-    fExt.assign(n, Vector2::Zero());
-    accel.assign(n, Vector2::Zero());
+    momentum.assign(n, Vector::Zero());
+    velocity.assign(n, Vector::Zero());
+    fInt.assign(n, Vector::Zero());
+    fExt.assign(n, Vector::Zero());
+    accel.assign(n, Vector::Zero());
     isActive_.assign(n, NodeMark::idle);
     active.reserve(n);
 }
 
-void Grid::resetFields()
+template <int D> void Grid<D>::resetFields()
 {
     // Only nodes touched last step hold non-zero values. The arrays' pointers in locals:
     // Eigen's SSE stores may alias anything (doc/threading.md).
     const int* nodes = active.data();
     const long count = static_cast<long>(active.size());
     double* m = mass.data();
-    Vector2* fields[] = {momentum.data(), velocity.data(), fInt.data(), fExt.data(), accel.data()};
-    Vector2* contact = fContact.empty() ? nullptr : fContact.data();
+    Vector* fields[] = {momentum.data(), velocity.data(), fInt.data(), fExt.data(), accel.data()};
+    Vector* contact = fContact.empty() ? nullptr : fContact.data();
     NodeMark* marks = isActive_.data();
 #pragma omp parallel for schedule(static) if (count >= minParallelWork())
     for (long k = 0; k < count; ++k) {
         const int n = nodes[k];
         m[n] = 0.0;
-        for (Vector2* field : fields) field[n].setZero();
+        for (Vector* field : fields) field[n].setZero();
         if (contact) contact[n].setZero();
         marks[n] = NodeMark::idle;
     }
     active.clear();
 }
 
-void Grid::collectActive()
+template <int D> void Grid<D>::collectActive()
 {
     active.clear();
     const int n = nNodes();
@@ -125,16 +138,18 @@ void Grid::collectActive()
         if (isActive_[static_cast<std::size_t>(i)] == NodeMark::active) active.push_back(i);
 }
 
-std::vector<int> Grid::sideNodes(GridSide side) const
+template <int D> std::vector<int> Grid<D>::sideNodes(GridSide side) const
 {
+    const int axis = sideAxis(side);
+    const int fixedIndex = lowSide(side) ? 0 : n_[axis];
     std::vector<int> nodes;
-    switch (side) {
-    case GridSide::left: for (int j = 0; j <= ny_; ++j) nodes.push_back(node(0, j)); break;
-    case GridSide::right: for (int j = 0; j <= ny_; ++j) nodes.push_back(node(nx_, j)); break;
-    case GridSide::bottom: for (int i = 0; i <= nx_; ++i) nodes.push_back(node(i, 0)); break;
-    case GridSide::top: for (int i = 0; i <= nx_; ++i) nodes.push_back(node(i, ny_)); break;
-    }
+    const int n = nNodes();
+    for (int k = 0; k < n; ++k)
+        if (nodeIndex(k)[axis] == fixedIndex) nodes.push_back(k);
     return nodes;
 }
+
+template class Grid<2>;
+template class Grid<3>;
 
 } // namespace gpic

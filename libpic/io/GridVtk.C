@@ -40,7 +40,7 @@ vtkSmartPointer<vtkDoubleArray> nodalVectors(const char* name, const std::vector
 
 } // namespace
 
-void writeGrid(const std::string& path, const Grid& g, double time)
+void writeGrid(const std::string& path, const Grid<2>& g, double time)
 {
     vtkNew<vtkImageData> image;
     image->SetOrigin(g.origin().x(), g.origin().y(), 0.0);

@@ -10,7 +10,7 @@ bool isBuiltinParticleArray(const std::string& name)
 {
     // Every array the table writes, in any scene; any other one-component Float64 array is
     // a history variable.
-    for (const ParticleField& f : particleFields())
+    for (const ParticleField<2>& f : particleFields<2>())
         if (*f.name && name == f.name) return true;
     return false;
 }

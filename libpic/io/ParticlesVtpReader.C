@@ -65,7 +65,7 @@ const ParticleFileArray* required(const std::vector<const ParticleFileArray*>& p
     return a;
 }
 
-bool inPoints(const ParticleField& f) { return f.storedIn && std::string(f.storedIn) == "points"; }
+bool inPoints(const ParticleField<2>& f) { return f.storedIn && std::string(f.storedIn) == "points"; }
 
 //- One value of VTK type `type` at `bytes`, as a double (vtkDataArray::GetComponent).
 template <class T> double as(const unsigned char* bytes)
@@ -102,7 +102,7 @@ void get(const double* c, PlaneSpace::Gradient& out) { out << c[0], c[1], c[3], 
 //- Where the values of one file array go: a table entry, one component of the array into
 //  a double array, or the positions.
 struct Destination {
-    FieldArray array;
+    FieldArray<2> array;
     int component = 0;  //- > 0: that component only (an array stored in another)
 };
 
@@ -184,7 +184,7 @@ private:
 
 } // namespace
 
-void readParticles(const std::string& path, Particles& p, double& time,
+void readParticles(const std::string& path, Particles<2>& p, double& time,
                    std::vector<std::string>* materialNames, std::vector<std::string>* bodyNames)
 {
     std::error_code ec;
@@ -204,14 +204,14 @@ void readParticles(const std::string& path, Particles& p, double& time,
 
     // Look every required array up before touching p, so a bad file leaves p unchanged. An
     // optional group is in the file when its first array is; then all of its arrays must be.
-    const std::vector<ParticleField>& fields = particleFields();
+    const std::vector<ParticleField<2>>& fields = particleFields<2>();
     std::array<bool, 4> groupInFile{true, false, false, false};
-    for (const ParticleField& f : fields)
+    for (const ParticleField<2>& f : fields)
         if (f.group != FieldGroup::core && f.role == FieldRole::state && *f.name && numericArray(pointArrays, f.name))
             groupInFile[static_cast<int>(f.group)] = true;
     std::vector<const ParticleFileArray*> arrays(fields.size(), nullptr);
     for (std::size_t k = 0; k < fields.size(); ++k) {
-        const ParticleField& f = fields[k];
+        const ParticleField<2>& f = fields[k];
         if (f.role != FieldRole::state || !groupInFile[static_cast<int>(f.group)] || inPoints(f)) continue;
         arrays[k] = f.storedIn ? numericArray(pointArrays, f.storedIn)
                                : required(pointArrays, f.name, static_cast<std::uint64_t>(f.components), n64, path);
@@ -229,15 +229,15 @@ void readParticles(const std::string& path, Particles& p, double& time,
     detail::ParticleChecksum checksum;
     detail::ParticleChecksum* const check = sum.empty() ? nullptr : &checksum;
 
-    Particles result;
-    for (const ParticleField& f : fields)
+    Particles<2> result;
+    for (const ParticleField<2>& f : fields)
         if (f.group != FieldGroup::core && groupInFile[static_cast<int>(f.group)]) result.carry(f.group);
     result.resize(n);
     ArrayReader reader(path);
     // The checksum's order: the points, then the point arrays in file order.
     if (points) {
         std::vector<Destination> to;
-        for (const ParticleField& f : fields)
+        for (const ParticleField<2>& f : fields)
             if (inPoints(f)) to.push_back({f.array(result), 0});
         reader.read(*points, check, to);
     }

@@ -80,13 +80,13 @@ void put(const PlaneSpace::Gradient& C, double* out, int)
     out[6] = 0.0;     out[7] = 0.0;     out[8] = 0.0;
 }
 
-OutputArray stateArray(const ParticleField& f, const Particles& p)
+OutputArray stateArray(const ParticleField<2>& f, const Particles<2>& p)
 {
     OutputArray a;
     a.name = f.name;
     a.components = f.components;
     a.componentNames = f.components > 1;
-    const FieldArray source = fieldArray(f, p);
+    const FieldArray<2> source = fieldArray(f, p);
     a.tuples = std::visit([](const auto* values) { return values->size(); }, source);
     a.type = std::holds_alternative<std::vector<int>*>(source) ? ValueType::int32 : ValueType::float64;
     const int nc = f.components;
@@ -103,7 +103,7 @@ OutputArray stateArray(const ParticleField& f, const Particles& p)
     return a;
 }
 
-OutputArray derivedArray(const ParticleField& f, const Particles& p)
+OutputArray derivedArray(const ParticleField<2>& f, const Particles<2>& p)
 {
     OutputArray a;
     a.name = f.name;
@@ -130,7 +130,7 @@ OutputArray scalarArray(const std::string& name, const std::vector<double>& valu
     return a;
 }
 
-OutputArray pointsArray(const Particles& p)
+OutputArray pointsArray(const Particles<2>& p)
 {
     OutputArray a;
     a.name = "Points";
@@ -308,7 +308,7 @@ void writeBlock(detail::AtomicFile& out, const StringArray& a)
 
 } // namespace
 
-void writeParticles(const std::string& path, const Particles& p, double time,
+void writeParticles(const std::string& path, const Particles<2>& p, double time,
                     const std::vector<std::string>& materialNames,
                     const std::vector<std::string>& bodyNames)
 {
@@ -322,11 +322,11 @@ void writeParticles(const std::string& path, const Particles& p, double time,
 
     // The point arrays in the order of the table, then the history variables.
     std::vector<OutputArray> pointArrays;
-    for (const ParticleField& f : particleFields()) {
+    for (const ParticleField<2>& f : particleFields<2>()) {
         if (!p.carries(f.group) || f.role == FieldRole::scratch || f.storedIn) continue;
         pointArrays.push_back(f.role == FieldRole::derived ? derivedArray(f, p) : stateArray(f, p));
     }
-    for (const ParticleField& f : particleFields()) {  // arrays stored inside another (not the points)
+    for (const ParticleField<2>& f : particleFields<2>()) {  // arrays stored inside another (not the points)
         if (!p.carries(f.group) || !f.storedIn) continue;
         for (OutputArray& into : pointArrays)
             if (into.name == f.storedIn && into.type == ValueType::float64)

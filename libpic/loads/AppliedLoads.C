@@ -4,49 +4,56 @@
 
 namespace gpic {
 
-GPIC_REGISTER_PASS(AppliedLoads, "appliedLoads")
+GPIC_REGISTER_PASS_DIMS(AppliedLoads, "appliedLoads")
 
-bool AppliedLoads::needed(const PassScene& scene) { return !scene.inputs.loads.empty(); }
+template <int D>
+bool AppliedLoads<D>::needed(const PassScene<D>& scene) { return !scene.inputs.loads.empty(); }
 
-AppliedLoads::AppliedLoads(PassScene& scene)
-    : AppliedLoads(std::move(scene.inputs.loads), scene.particles, scene.grid, scene.inputs.bodyNames)
+template <int D>
+AppliedLoads<D>::AppliedLoads(PassScene<D>& scene)
+    : AppliedLoads<D>(std::move(scene.inputs.loads), scene.particles, scene.grid, scene.inputs.bodyNames)
 {
 }
 
-AppliedLoads::AppliedLoads(std::vector<std::unique_ptr<ParticleLoad>> loads, const Particles& particles,
-                           const Grid& grid, const std::vector<std::string>& bodyNames)
-    : loads_(std::move(loads)), force_(particles.size(), Vector2::Zero())
+template <int D>
+AppliedLoads<D>::AppliedLoads(std::vector<std::unique_ptr<ParticleLoad<D>>> loads, const Particles<D>& particles,
+                           const Grid<D>& grid, const std::vector<std::string>& bodyNames)
+    : loads_(std::move(loads)), force_(particles.size(), Vector::Zero())
 {
     for (auto& load : loads_) load->initialise(particles, grid, bodyNames);
 }
 
-void AppliedLoads::at(StepPoint, EngineView& e, double)
+template <int D>
+void AppliedLoads<D>::at(StepPoint, EngineView<D>& e, double)
 {
-    const Particles& p = e.particles;
-    std::fill(force_.begin(), force_.end(), Vector2::Zero());
+    const Particles<D>& p = e.particles;
+    std::fill(force_.begin(), force_.end(), Vector::Zero());
     for (const auto& load : loads_) load->addForces(e.time, p, force_);
-    Grid& grid = e.grid;
-    const ShapeWeights& w = e.weights;
+    Grid<D>& grid = e.grid;
+    const ShapeWeights<D>& w = e.weights;
     const int stride = w.stride;
     e.strips.forEach([&](std::size_t q) {
-        const Vector2& f = force_[q];
-        if (f.x() == 0.0 && f.y() == 0.0) return;  // most particles carry no load
-        BodyField* body = e.coupling.bodyField(p.body[q]);
+        const Vector& f = force_[q];
+        if ((f.array() == 0.0).all()) return;  // most particles carry no load
+        BodyField<D>* body = e.coupling.bodyField(p.body[q]);
         const std::size_t k0 = q * stride;
         for (int a = 0; a < stride; ++a) {
             const int n = w.node[k0 + a];
             if (n < 0) continue;
-            const Vector2 fExt = w.N[k0 + a] * f;  // eq. 2.3.9, traction term
+            const Vector fExt = w.N[k0 + a] * f;  // eq. 2.3.9, traction term
             grid.fExt[n] += fExt;
             if (body) body->force[n] += fExt;
         }
     });
 }
 
-void AppliedLoads::renumber(const std::vector<std::size_t>& newIndex, std::size_t nParticles)
+template <int D>
+void AppliedLoads<D>::renumber(const std::vector<std::size_t>& newIndex, std::size_t nParticles)
 {
     for (auto& load : loads_) load->renumber(newIndex);
     force_.resize(nParticles);
 }
+
+template class AppliedLoads<2>;
 
 } // namespace gpic

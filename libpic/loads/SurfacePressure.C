@@ -12,7 +12,7 @@
 
 namespace gpic {
 
-GPIC_REGISTER(ParticleLoad, SurfacePressure, "surfacePressure")
+GPIC_REGISTER(ParticleLoad<2>, SurfacePressure, "surfacePressure")
 
 namespace {
 
@@ -88,7 +88,7 @@ double SurfacePressure::pressure(double t) const
     return ramp * p_.value(t);
 }
 
-void SurfacePressure::initialise(const Particles& p, const Grid& grid,
+void SurfacePressure::initialise(const Particles<2>& p, const Grid<2>& grid,
                                  const std::vector<std::string>& bodyNames)
 {
     const auto it = std::find(bodyNames.begin(), bodyNames.end(), bodyName_);
@@ -124,8 +124,8 @@ void SurfacePressure::initialise(const Particles& p, const Grid& grid,
         info() << " in " << points_.size() - 1 << " pieces\n";
 }
 
-void SurfacePressure::loadSegment(const Vector2& from, const Vector2& to, std::size_t piece, const Particles& p,
-                                  const Grid& grid, int body, std::vector<LoadedPiece>& entries) const
+void SurfacePressure::loadSegment(const Vector2& from, const Vector2& to, std::size_t piece, const Particles<2>& p,
+                                  const Grid<2>& grid, int body, std::vector<LoadedPiece>& entries) const
 {
     const std::string segment = points_.size() == 2
         ? "the segment from " + str(from) + " to " + str(to)
@@ -216,7 +216,7 @@ void SurfacePressure::loadSegment(const Vector2& from, const Vector2& to, std::s
         if (length[i] > 0) entries.push_back({c[i].q, length[i], normalOut});
 }
 
-void SurfacePressure::addForces(double t, const Particles&, std::vector<Vector2>& force) const
+void SurfacePressure::addForces(double t, const Particles<2>&, std::vector<Vector2>& force) const
 {
     // Compression positive: the pressure pushes against the outward normal.
     const double pt = pressure(t);

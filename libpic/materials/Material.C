@@ -12,20 +12,24 @@ std::string lastComponent(const std::string& path)
 }
 } // namespace
 
-Material::Material(const Dictionary& dict)
+template <int D>
+Material<D>::Material(const Dictionary& dict)
     : name_(lastComponent(dict.name())),
       rho_(dict.getChecked<double>("rho", [](const double& v) { return v > 0; }, "rho > 0"))
 {}
 
-void Material::declareFields(Particles& p) const
+template <int D> void Material<D>::declareFields(Particles<D>& p) const
 {
     for (const auto& h : historyNames()) p.declareHistory(h);
     for (FieldGroup g : particleFields()) p.carry(g);
 }
 
-std::unique_ptr<Material> Material::New(const Dictionary& dict)
+template <int D> std::unique_ptr<Material<D>> Material<D>::New(const Dictionary& dict)
 {
-    return Registry<Material>::select(dict, dict);
+    return Registry<Material<D>>::select(dict, dict);
 }
+
+template class Material<2>;
+template class Material<3>;
 
 } // namespace gpic

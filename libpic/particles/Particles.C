@@ -12,10 +12,13 @@ namespace gpic {
 
 namespace {
 
-template <class T> T zero() { return T(0); }
-template <> Vector2 zero<Vector2>() { return Vector2::Zero(); }
-template <> SymTensor zero<SymTensor>() { return SymTensor::Zero(); }
-template <> PlaneSpace::Gradient zero<PlaneSpace::Gradient>() { return PlaneSpace::Gradient::Zero(); }
+template <class T> T zero()
+{
+    if constexpr (std::is_arithmetic_v<T>)
+        return T(0);
+    else
+        return T::Zero();
+}
 
 template <class V> void permute(V& a, const std::vector<std::size_t>& order)
 {
@@ -29,45 +32,45 @@ template <class V> std::size_t held(const V& a) { return a.capacity() * sizeof(t
 template <class V> void resizeZero(V& a, std::size_t n) { a.resize(n, zero<typename V::value_type>()); }
 
 //- Apply op to every array of a group that p carries (the derived outputs have none).
-template <class Op> void forCarried(const Particles& p, Op op)
+template <int D, class Op> void forCarried(const Particles<D>& p, Op op)
 {
-    for (const ParticleField& f : particleFields())
+    for (const ParticleField<D>& f : particleFields<D>())
         if (f.array && p.carries(f.group)) std::visit(op, fieldArray(f, p));
 }
 
 } // namespace
 
-void Particles::resize(std::size_t n)
+template <int D> void Particles<D>::resize(std::size_t n)
 {
     forCarried(*this, [n](auto* a) { resizeZero(*a, n); });
     for (auto& h : history_) h.resize(n, 0.0);
 }
 
-void Particles::carry(FieldGroup g)
+template <int D> void Particles<D>::carry(FieldGroup g)
 {
     carried_[static_cast<int>(g)] = true;
     const std::size_t n = size();
-    for (const ParticleField& f : particleFields())
+    for (const ParticleField<D>& f : particleFields<D>())
         if (f.array && f.group == g) std::visit([n](auto* a) { resizeZero(*a, n); }, f.array(*this));
 }
 
-void Particles::drop(FieldGroup g)
+template <int D> void Particles<D>::drop(FieldGroup g)
 {
     if (g == FieldGroup::core) throw std::logic_error("the core particle arrays cannot be dropped");
     carried_[static_cast<int>(g)] = false;
-    for (const ParticleField& f : particleFields())
+    for (const ParticleField<D>& f : particleFields<D>())
         if (f.array && f.group == g) std::visit([](auto* a) { std::decay_t<decltype(*a)>().swap(*a); }, f.array(*this));
 }
 
-void Particles::append(const Particles& other)
+template <int D> void Particles<D>::append(const Particles<D>& other)
 {
     const std::size_t n0 = size();
     for (const auto& h : other.historyNames()) declareHistory(h);
-    for (const ParticleField& f : particleFields())
+    for (const ParticleField<D>& f : particleFields<D>())
         if (other.carries(f.group)) carry(f.group);
     resize(n0 + other.size());
     const auto at = static_cast<std::ptrdiff_t>(n0);
-    for (const ParticleField& f : particleFields()) {
+    for (const ParticleField<D>& f : particleFields<D>()) {
         if (!f.array || !other.carries(f.group)) continue;
         std::visit(
             [&](auto* to) {
@@ -80,8 +83,8 @@ void Particles::append(const Particles& other)
         std::copy(other.history(h).begin(), other.history(h).end(), history(h).begin() + at);
 }
 
-std::size_t Particles::add(const Vector2& position, double mass, double volume,
-                           const Vector2& half, int bodyId, int materialId)
+template <int D> std::size_t Particles<D>::add(const Vector& position, double mass, double volume, const Vector& half, int bodyId,
+                              int materialId)
 {
     const std::size_t i = size();
     resize(i + 1);
@@ -96,24 +99,24 @@ std::size_t Particles::add(const Vector2& position, double mass, double volume,
     return i;
 }
 
-void Particles::declareHistory(const std::string& name)
+template <int D> void Particles<D>::declareHistory(const std::string& name)
 {
     if (hasHistory(name)) return;
     historyNames_.push_back(name);
     history_.emplace_back(size(), 0.0);
 }
 
-bool Particles::hasHistory(const std::string& name) const
+template <int D> bool Particles<D>::hasHistory(const std::string& name) const
 {
     return std::find(historyNames_.begin(), historyNames_.end(), name) != historyNames_.end();
 }
 
-std::vector<double>& Particles::history(const std::string& name)
+template <int D> std::vector<double>& Particles<D>::history(const std::string& name)
 {
-    return const_cast<std::vector<double>&>(static_cast<const Particles&>(*this).history(name));
+    return const_cast<std::vector<double>&>(static_cast<const Particles<D>&>(*this).history(name));
 }
 
-const std::vector<double>& Particles::history(const std::string& name) const
+template <int D> const std::vector<double>& Particles<D>::history(const std::string& name) const
 {
     auto it = std::find(historyNames_.begin(), historyNames_.end(), name);
     if (it == historyNames_.end())
@@ -121,7 +124,7 @@ const std::vector<double>& Particles::history(const std::string& name) const
     return history_[static_cast<std::size_t>(it - historyNames_.begin())];
 }
 
-void Particles::sortByMaterial()
+template <int D> void Particles<D>::sortByMaterial()
 {
     std::vector<std::size_t> order(size());
     std::iota(order.begin(), order.end(), 0);
@@ -130,13 +133,13 @@ void Particles::sortByMaterial()
     reorder(order);
 }
 
-void Particles::reorder(const std::vector<std::size_t>& order)
+template <int D> void Particles<D>::reorder(const std::vector<std::size_t>& order)
 {
     forCarried(*this, [&](auto* a) { permute(*a, order); });
     for (auto& h : history_) permute(h, order);
 }
 
-std::vector<ParticleBlock> Particles::blocks() const
+template <int D> std::vector<ParticleBlock> Particles<D>::blocks() const
 {
     std::vector<ParticleBlock> runs;
     for (std::size_t i = 0; i < size(); ++i) {
@@ -148,12 +151,15 @@ std::vector<ParticleBlock> Particles::blocks() const
     return runs;
 }
 
-std::size_t Particles::bytes() const
+template <int D> std::size_t Particles<D>::bytes() const
 {
     std::size_t total = 0;
     forCarried(*this, [&](const auto* a) { total += held(*a); });
     for (const auto& h : history_) total += held(h);
     return total;
 }
+
+template class Particles<2>;
+template class Particles<3>;
 
 } // namespace gpic

@@ -10,10 +10,10 @@ namespace gpic {
 
 GPIC_REGISTER_PASS(AxisymmetricHoop, "axisymmetricHoop")
 
-AxisymmetricHoop::AxisymmetricHoop(PassScene& scene) : AxisymmetricHoop(scene.inputs.cellMeanDilatation) {}
+AxisymmetricHoop::AxisymmetricHoop(PassScene<2>& scene) : AxisymmetricHoop(scene.inputs.cellMeanDilatation) {}
 
-double AxisymmetricHoop::stepLength(const Grid& grid, const Particles& particles,
-                                    const DeformingParticles& deforms) const
+double AxisymmetricHoop::stepLength(const Grid<2>& grid, const Particles<2>& particles,
+                                    const DeformingParticles<2>& deforms) const
 {
     // The hoop term stiffens the radial motion of a node at radius r_i by about a quarter of
     // (h / r_i)^2 of its in-plane stiffness (lumped mass, 2 x 2 particles a cell: 0.19 at the
@@ -33,21 +33,21 @@ double AxisymmetricHoop::stepLength(const Grid& grid, const Particles& particles
 namespace {
 
 //- (sigma_rr + sigma_zz + sigma_tt) / 3
-double meanStressOf(const Particles& p, std::size_t q) { return (p.sigma[q][XX] + p.sigma[q][YY] + p.sigma[q][ZZ]) / 3; }
+double meanStressOf(const Particles<2>& p, std::size_t q) { return (p.sigma[q][XX] + p.sigma[q][YY] + p.sigma[q][ZZ]) / 3; }
 
 } // namespace
 
-void AxisymmetricHoop::at(StepPoint point, EngineView& e, double dt)
+void AxisymmetricHoop::at(StepPoint point, EngineView<2>& e, double dt)
 {
     if (point == StepPoint::afterParticlesToGrid) means_.assign(e.grid, e.particles, [&](std::size_t q) { return e.isRigid(q); });
     else if (point == StepPoint::afterForces) addHoopForces(e);
     else addHoopStrain(e, dt);
 }
 
-void AxisymmetricHoop::addHoopForces(EngineView& e)
+void AxisymmetricHoop::addHoopForces(EngineView<2>& e)
 {
-    const Particles& p = e.particles;
-    const ShapeWeights& w = e.weights;
+    const Particles<2>& p = e.particles;
+    const ShapeWeights<2>& w = e.weights;
     const int stride = w.stride;
     if (cellMean_) means_.average(p, [&](std::size_t q) { return meanStressOf(p, q); }, mean_);
     // The arrays' pointers in locals: the stores into the nodes may alias anything, and what
@@ -62,7 +62,7 @@ void AxisymmetricHoop::addHoopForces(EngineView& e)
     const double* mean = mean_.data();
     e.strips.forEach([&e, &p, node, own, weight, dN, fInt, cellMean, mean, stride](std::size_t q) {
         if (e.isRigid(q)) return;  // a rigid body carries no stress
-        BodyField* body = e.coupling.bodyField(p.body[q]);
+        BodyField<2>* body = e.coupling.bodyField(p.body[q]);
         Vector2* bodyForce = body ? body->force.data() : nullptr;
         const std::size_t k0 = q * stride;
         // cellMean: the cell's mean stress in place of the particle's own, sigma + dp I; the
@@ -86,10 +86,10 @@ void AxisymmetricHoop::addHoopForces(EngineView& e)
     });
 }
 
-void AxisymmetricHoop::addHoopStrain(EngineView& e, double dt)
+void AxisymmetricHoop::addHoopStrain(EngineView<2>& e, double dt)
 {
-    Particles& p = e.particles;
-    const ShapeWeights& w = e.weights;
+    Particles<2>& p = e.particles;
+    const ShapeWeights<2>& w = e.weights;
     const int stride = w.stride;
     if (cellMean_) value_.assign(p.size(), 0.0);
     parallelFor(static_cast<long>(p.size()), [&](long q) {

@@ -10,7 +10,7 @@ namespace gpic {
 
 GPIC_REGISTER_PASS(CosseratRotation, "cosseratRotation")
 
-bool CosseratRotation::polarScene(const Particles& particles, const std::vector<std::unique_ptr<Material>>& materials)
+bool CosseratRotation::polarScene(const Particles<2>& particles, const std::vector<std::unique_ptr<Material<2>>>& materials)
 {
     // A polar material that constant/materials lists but no body uses costs nothing.
     for (int m : particles.material)
@@ -18,20 +18,20 @@ bool CosseratRotation::polarScene(const Particles& particles, const std::vector<
     return false;
 }
 
-bool CosseratRotation::needed(const PassScene& scene)
+bool CosseratRotation::needed(const PassScene<2>& scene)
 {
     return polarScene(scene.particles, scene.materials) || scene.inputs.carryRotation;
 }
 
-CosseratRotation::CosseratRotation(PassScene& scene)
+CosseratRotation::CosseratRotation(PassScene<2>& scene)
     : CosseratRotation(scene.materials, scene.sides, scene.grid.nNodes())
 {
     if (scene.inputs.rotationSides) setSideFixed(*scene.inputs.rotationSides);
     if (!scene.inputs.rigidRotation.empty()) setRigidFixed(std::move(scene.inputs.rigidRotation));
 }
 
-CosseratRotation::CosseratRotation(const std::vector<std::unique_ptr<Material>>& materials,
-                                   const GridSides& sides, int nNodes)
+CosseratRotation::CosseratRotation(const std::vector<std::unique_ptr<Material<2>>>& materials,
+                                   const GridSides<2>& sides, int nNodes)
 {
     r_.materialPolar.assign(materials.size(), 0);
     r_.materialJ.assign(materials.size(), 0.0);
@@ -40,7 +40,7 @@ CosseratRotation::CosseratRotation(const std::vector<std::unique_ptr<Material>>&
         r_.materialPolar[m] = polar_[m] != nullptr;
         r_.materialJ[m] = r_.materialPolar[m] ? polar_[m]->rotationalInertia() : 0.0;
     }
-    for (int s = 0; s < GridSides::count; ++s)  // w3c is odd under a reflection: zero on a symmetry plane
+    for (int s = 0; s < GridSides<2>::count; ++s)  // w3c is odd under a reflection: zero on a symmetry plane
         r_.sideFixed[s] = sides.condition(static_cast<GridSide>(s)).isMirror();
     r_.allocate(nNodes);
 }
@@ -52,7 +52,7 @@ std::vector<StepPoint> CosseratRotation::points() const
             StepPoint::afterRemap};
 }
 
-void CosseratRotation::at(StepPoint point, EngineView& e, double dt)
+void CosseratRotation::at(StepPoint point, EngineView<2>& e, double dt)
 {
     switch (point) {
     case StepPoint::afterParticlesToGrid: toGrid(e); break;
@@ -69,7 +69,7 @@ void CosseratRotation::at(StepPoint point, EngineView& e, double dt)
     }
 }
 
-void CosseratRotation::setUpParticles(Particles& p)
+void CosseratRotation::setUpParticles(Particles<2>& p)
 {
     if (!p.carries(FieldGroup::polar)) {
         // A state without rotation arrays (a new case, or particles new to the scene): no
@@ -93,16 +93,16 @@ double CosseratRotation::maxDeltaT(std::size_t m, double h, double massScale) co
     return massScale == 1.0 ? step : step * std::sqrt(massScale);
 }
 
-void CosseratRotation::constrain(const Grid& grid, std::vector<double>& field) const
+void CosseratRotation::constrain(const Grid<2>& grid, std::vector<double>& field) const
 {
     for (int n : grid.active)
         if (r_.fixed[n]) field[n] = 0.0;
 }
 
-void CosseratRotation::spinToGrid(EngineView& e, bool withInertia)
+void CosseratRotation::spinToGrid(EngineView<2>& e, bool withInertia)
 {
-    const Particles& p = e.particles;
-    const ShapeWeights& weights = e.weights;
+    const Particles<2>& p = e.particles;
+    const ShapeWeights<2>& weights = e.weights;
     const int stride = weights.stride;
     // Pointers captured by value (ParticleStrips::forEach, doc/threading.md).
     const PolarTest polar = polarTest(e);
@@ -128,7 +128,7 @@ void CosseratRotation::spinToGrid(EngineView& e, bool withInertia)
     });
 }
 
-void CosseratRotation::toGrid(EngineView& e)
+void CosseratRotation::toGrid(EngineView<2>& e)
 {
     CosseratField& r = r_;
     e.grid.forEachActiveNode([&](int n) {
@@ -138,7 +138,7 @@ void CosseratRotation::toGrid(EngineView& e)
     spinToGrid(e, true);
     e.grid.forEachActiveNode([&](int n) { r.rate[n] = r.inertia[n] > 0.0 ? r.momentum[n] / r.inertia[n] : 0.0; });
     // Conditions: sides with `rotation fixed`, and the nodes a rigid body drives.
-    for (int s = 0; s < GridSides::count; ++s)
+    for (int s = 0; s < GridSides<2>::count; ++s)
         if (r.sideFixed[s])
             for (int n : e.sides.constrainedNodes(static_cast<GridSide>(s))) r.fixed[n] = 1;
     const auto rigidFixed = [&](int b) { return r.rigidFixed.empty() || r.rigidFixed[static_cast<std::size_t>(b)]; };
@@ -148,10 +148,10 @@ void CosseratRotation::toGrid(EngineView& e)
     constrain(e.grid, r.rate);
 }
 
-void CosseratRotation::forces(EngineView& e)
+void CosseratRotation::forces(EngineView<2>& e)
 {
-    const Particles& p = e.particles;
-    const ShapeWeights& weights = e.weights;
+    const Particles<2>& p = e.particles;
+    const ShapeWeights<2>& weights = e.weights;
     const int stride = weights.stride;
     // Pointers captured by value (ParticleStrips::forEach, doc/threading.md).
     const PolarTest polar = polarTest(e);
@@ -165,7 +165,7 @@ void CosseratRotation::forces(EngineView& e)
     const Vector2* couple = p.polar.mu.data();
     double* moment = r_.moment.data();
     Vector2* fInt = e.grid.fInt.data();
-    const GridCoupling& coupling = e.coupling;
+    const GridCoupling<2>& coupling = e.coupling;
     e.strips.forEach([&coupling, polar, node, Nw, dNw, body, volume, sigma, sigma21, couple, moment, fInt,
                       stride](std::size_t q) {
         if (!polar(q)) return;
@@ -173,7 +173,7 @@ void CosseratRotation::forces(EngineView& e)
         const double skew = sigma[q][XY] - sigma21[q];  // sigma12 - sigma21
         const Vector2 mu = couple[q];
         const std::size_t k0 = q * stride;
-        BodyField* field = coupling.bodyField(body[q]);
+        BodyField<2>* field = coupling.bodyField(body[q]);
         Vector2* bodyForce = field ? field->force.data() : nullptr;
         for (int a = 0; a < stride; ++a) {
             const int n = node[k0 + a];
@@ -189,7 +189,7 @@ void CosseratRotation::forces(EngineView& e)
     });
 }
 
-void CosseratRotation::update(EngineView& e, double dt)
+void CosseratRotation::update(EngineView<2>& e, double dt)
 {
     auto timer = e.timers.time("rotation");
     CosseratField& r = r_;
@@ -210,11 +210,11 @@ void CosseratRotation::update(EngineView& e, double dt)
     });
 }
 
-void CosseratRotation::strain(EngineView& e, double dt)
+void CosseratRotation::strain(EngineView<2>& e, double dt)
 {
     auto timer = e.timers.time("rotation");
-    Particles& p = e.particles;
-    const ShapeWeights& weights = e.weights;
+    Particles<2>& p = e.particles;
+    const ShapeWeights<2>& weights = e.weights;
     const int stride = weights.stride;
     // Pointers held by value: the stores of Vector2 below may alias anything (doc/threading.md).
     const PolarTest polar = polarTest(e);
@@ -245,9 +245,9 @@ void CosseratRotation::strain(EngineView& e, double dt)
     });
 }
 
-void CosseratRotation::addWork(EngineView& e)
+void CosseratRotation::addWork(EngineView<2>& e)
 {
-    Particles& p = e.particles;
+    Particles<2>& p = e.particles;
     const PolarTest polar = polarTest(e);
     const double* V = p.V.data();
     const SymTensor* sigma = p.sigma.data();
@@ -268,10 +268,10 @@ void CosseratRotation::addWork(EngineView& e)
     });
 }
 
-void CosseratRotation::toParticles(EngineView& e, double dt)
+void CosseratRotation::toParticles(EngineView<2>& e, double dt)
 {
-    Particles& p = e.particles;
-    const ShapeWeights& weights = e.weights;
+    Particles<2>& p = e.particles;
+    const ShapeWeights<2>& weights = e.weights;
     const int stride = weights.stride;
     const double flip = e.transfer.rotationFlipShare(dt);  // FLIP under every transfer but FLIP's own blend
     const PolarTest polar = polarTest(e);
@@ -296,7 +296,7 @@ void CosseratRotation::toParticles(EngineView& e, double dt)
     });
 }
 
-void CosseratRotation::remap(EngineView& e)
+void CosseratRotation::remap(EngineView<2>& e)
 {
     CosseratField& r = r_;
     e.grid.forEachActiveNode([&](int n) { r.momentum[n] = 0.0; });

@@ -62,7 +62,7 @@ Simulation::Simulation(const RunOptions& options, std::unique_ptr<Case> c)
     log() << "Case " << case_->name << ": " << solver_.particles().size() << " particles, " << solver_.grid().nx()
           << " x " << solver_.grid().ny() << " cells, scheme " << case_->schemeName << ", shape functions "
           << case_->shapeName << ", starting at t = " << time_ << " (" << case_->context.startTimeName << ")\n";
-    if (const ContactPass* contact = solver_.contact())
+    if (const ContactPass<2>* contact = solver_.contact())
         log() << "Contact pass: " << contact->nBodies() << " bodies with their own velocity fields, "
               << contact->summary() << "\n";
 }
@@ -122,7 +122,7 @@ void Simulation::watchKineticRatio()
     }
 }
 
-void Simulation::writeState(const Particles& particles, double time, long step, double deltaT,
+void Simulation::writeState(const Particles<2>& particles, double time, long step, double deltaT,
                             double removedMass, const std::string& name)
 {
     // The grid and the function objects hold the current step's: written only with it.
@@ -149,7 +149,7 @@ void Simulation::writeState(const Particles& particles, double time, long step, 
         }
         if (case_->stages) {  // where the run is in its stages, and the sleeping particles
             case_->stages->writeStageFile(tmp, name);
-            const Particles& dormant = case_->stages->pool().dormant();
+            const Particles<2>& dormant = case_->stages->pool().dormant();
             if (dormant.size() > 0)
                 writeParticles(tmp + "/dormant.vtp", dormant, time, case_->context.materialNames, case_->context.bodyNames);
         }
@@ -173,7 +173,7 @@ void Simulation::stop(const std::optional<StabilityTrip>& trip, const std::strin
             if (times_.newest().step != step_) write();
         } else if (const GoodState& good = guard_->lastGood(); good.step > times_.newest().step) {
             const std::string name = times_.nameFor(good.time);
-            Particles particles = good.particles();  // read back once, for both files
+            Particles<2> particles = good.particles();  // read back once, for both files
             writeState(particles, good.time, good.step, good.deltaT, good.removedMass, name);
             if (case_->writeGrid)
                 writeGoodStateGrid(std::move(particles), good.time,
@@ -188,7 +188,7 @@ void Simulation::stop(const std::optional<StabilityTrip>& trip, const std::strin
     throw RunError((trip ? trip->message : solverMessage) + where.str());
 }
 
-void Simulation::writeGoodStateGrid(Particles particles, double time, const std::string& path)
+void Simulation::writeGoodStateGrid(Particles<2> particles, double time, const std::string& path)
 {
     // The run ends here: the engine may take the good state's particles to project them.
     if (!solver_.passesHoldIndices()) {
@@ -199,7 +199,7 @@ void Simulation::writeGoodStateGrid(Particles particles, double time, const std:
         return;
     }
     // Loads hold particle indices: the grid's place and size, with empty fields.
-    Grid empty = solver_.grid();
+    Grid<2> empty = solver_.grid();
     empty.resetFields();
     writeGrid(path, empty, time);
 }

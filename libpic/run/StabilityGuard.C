@@ -25,7 +25,7 @@ bool finite(const Vector2& v) { return std::isfinite(v.x()) && std::isfinite(v.y
 constexpr long long parallelFrom = 20000;
 } // namespace
 
-StabilityGuard::StabilityGuard(const StabilitySettings& settings, const MpmSolver& solver,
+StabilityGuard::StabilityGuard(const StabilitySettings& settings, const MpmSolver<2>& solver,
                                std::vector<std::string> bodyNames, const Vector2& gravity, bool hasLoads,
                                std::string snapshotFile)
     : solver_(solver), bodyNames_(std::move(bodyNames)), gravity_(gravity), hasLoads_(hasLoads),
@@ -50,7 +50,7 @@ bool StabilityGuard::isRigid(std::size_t q) const
 
 StabilityGuard::Survey StabilityGuard::survey() const
 {
-    const Particles& p = solver_.particles();
+    const Particles<2>& p = solver_.particles();
     const std::size_t n = p.size();
     const Vector2 lo = solver_.grid().origin(), hi = solver_.grid().upper();
     const Vector2 g = gravity_;
@@ -101,7 +101,7 @@ double StabilityGuard::loadWork(double dt) const
     if (!hasLoads_) return 0.0;
     // The loads are the external nodal force less the weight m_i g; their power on the nodal
     // velocity at mid-step, v_i^{t+1} - dt a_i / 2.
-    const Grid& grid = solver_.grid();
+    const Grid<2>& grid = solver_.grid();
     const Vector2 g = gravity_;
     const long long count = static_cast<long long>(grid.active.size());
     double w = 0;
@@ -121,7 +121,7 @@ double StabilityGuard::rigidWork(double t, double dt) const
     double w = 0;
     const double tMid = t - 0.5 * dt;
     for (std::size_t b = 0; b < rigid_.size() && b < loads.size(); ++b) {
-        const RigidBodyDriver* driver = solver_.rigidBody(static_cast<int>(b));
+        const RigidBodyDriver<2>* driver = solver_.rigidBody(static_cast<int>(b));
         if (rigid_[b] && driver) w += powerOnMaterial(*driver, loads[b], tMid);
     }
     return dt * w;
@@ -140,7 +140,7 @@ void StabilityGuard::start(double t, long step, const std::string& onDisk)
     particleCount_ = solver_.particles().size();
     // Elastic energy held at the start (an initial or restarted stress): sum V |sigma|^2 /
     // (2 rho c^2), rho c^2 the P-wave modulus; a scale, not an exact value.
-    const Particles& p = solver_.particles();
+    const Particles<2>& p = solver_.particles();
     std::vector<double> compliance;
     for (const auto& m : solver_.materials()) {
         const double c = m->waveSpeed();
@@ -169,9 +169,9 @@ void StabilityGuard::start(double t, long step, const std::string& onDisk)
 
 void StabilityGuard::restartEnergyAccount() { restartPending_ = true; }
 
-Particles GoodState::particles() const
+Particles<2> GoodState::particles() const
 {
-    Particles p;
+    Particles<2> p;
     double t = 0;
     readParticles(file, p, t);
     return p;
@@ -247,7 +247,7 @@ std::optional<StabilityTrip> StabilityGuard::check(double t, long step, double d
     if (energyChecked_) largestGain_ = std::max(largestGain_, gain);
     if (energyChecked_ && !(gain <= maxEnergyGain_)) {
         // Blame the particle with the most kinetic energy.
-        const Particles& p = solver_.particles();
+        const Particles<2>& p = solver_.particles();
         std::size_t worst = 0;
         double most = -1;
         for (std::size_t q = 0; q < n; ++q) {
@@ -272,7 +272,7 @@ std::optional<StabilityTrip> StabilityGuard::check(double t, long step, double d
 
     if (aboveLimit) {
         // Blame the fastest particle: its speed set the limit.
-        const Particles& p = solver_.particles();
+        const Particles<2>& p = solver_.particles();
         std::size_t fastest = 0;
         for (std::size_t q = 0; q < n; ++q)
             if (p.v[q].squaredNorm() == s.speed2) {
@@ -296,7 +296,7 @@ std::optional<StabilityTrip> StabilityGuard::diagnose(double t, long step, doubl
 
 double StabilityGuard::neededStep(std::size_t q, const Vector2& v) const
 {
-    const Particles& p = solver_.particles();
+    const Particles<2>& p = solver_.particles();
     const double c = isRigid(q) ? 0.0 : solver_.waveSpeed(static_cast<std::size_t>(p.material[q]));
     return std::min(courant_ * solver_.stepLength() / (c + v.norm()), courant_ * rotationStep(q));
 }
@@ -308,7 +308,7 @@ double StabilityGuard::rotationStep(std::size_t q) const
 
 std::string StabilityGuard::describe(const std::string& what, std::size_t q, double t, long step, double dt) const
 {
-    const Particles& p = solver_.particles();
+    const Particles<2>& p = solver_.particles();
     const int b = p.body[q];
     const std::string body = b >= 0 && b < static_cast<int>(bodyNames_.size()) ? bodyNames_[b] : std::to_string(b);
     const auto& material = *solver_.materials()[static_cast<std::size_t>(p.material[q])];
@@ -316,7 +316,7 @@ std::string StabilityGuard::describe(const std::string& what, std::size_t q, dou
     Vector2 v = p.v[q];
     std::string speedNote;
     if (!finite(v)) try {
-        const Particles good = lastGood_.particles();
+        const Particles<2> good = lastGood_.particles();
         const auto at = std::find(good.id.begin(), good.id.end(), p.id[q]);
         if (at != good.id.end()) {
             v = good.v[static_cast<std::size_t>(at - good.id.begin())];
@@ -344,7 +344,7 @@ std::string StabilityGuard::describeInvalid(std::size_t first, double t, long st
 {
     // Blame the source: a non-finite stress spreads to the velocities and positions of its
     // neighbours within a step, so look for the first of each kind in that order.
-    const Particles& p = solver_.particles();
+    const Particles<2>& p = solver_.particles();
     const std::pair<const char*, std::function<bool(std::size_t)>> kinds[] = {
         {"non-finite stress", [&](std::size_t q) { return !p.sigma[q].allFinite(); }},
         {"non-finite volume", [&](std::size_t q) { return !std::isfinite(p.V[q]); }},
@@ -361,7 +361,7 @@ std::string StabilityGuard::describeInvalid(std::size_t first, double t, long st
 
 std::string StabilityGuard::describeOutside(std::size_t q, double t, long step, double dt) const
 {
-    const Grid& grid = solver_.grid();
+    const Grid<2>& grid = solver_.grid();
     const Vector2& x = solver_.particles().x[q];
     std::string sides;
     const auto add = [&](bool beyond, GridSide side) {

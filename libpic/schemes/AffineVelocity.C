@@ -6,48 +6,53 @@
 
 namespace gpic {
 
-GPIC_REGISTER_PASS(AffineVelocity, "affineVelocity")
+GPIC_REGISTER_PASS_DIMS(AffineVelocity, "affineVelocity")
 
-AffineVelocity::AffineVelocity(const Grid& grid, const ShapeFunction& shape)
+template <int D>
+AffineVelocity<D>::AffineVelocity(const Grid<D>& grid, const ShapeFunction<D>& shape)
     : fromGradient_(shape.affineFromGradient())
 {
     centre_.reserve(static_cast<std::size_t>(grid.nNodes()));
     for (int n = 0; n < grid.nNodes(); ++n) centre_.push_back(shape.affineCentre(grid, n));
 }
 
-void AffineVelocity::form(Particles& p, const ShapeWeights& weights, std::size_t q,
-                          const std::vector<Vector2>& velocity, const Vector2& xp) const
+template <int D>
+void AffineVelocity<D>::form(Particles<D>& p, const ShapeWeights<D>& weights, std::size_t q,
+                          const std::vector<Vector>& velocity, const Vector& xp) const
 {
     const int stride = weights.stride;
     const std::size_t k0 = q * stride;
-    PlaneSpace::Gradient B = PlaneSpace::Gradient::Zero(), D = PlaneSpace::Gradient::Zero();
+    typename Space<D>::Gradient B = Space<D>::Gradient::Zero(), Dp = Space<D>::Gradient::Zero();
     for (int k = 0; k < stride; ++k) {
         const int n = weights.node[k0 + k];
         if (n < 0) continue;
         const double N = weights.N[k0 + k];
-        const Vector2 r = centre_[static_cast<std::size_t>(n)] - xp;
-        D.noalias() += (N * r) * r.transpose();  // D_p, h^2/4 I inside a B-spline grid
+        const Vector r = centre_[static_cast<std::size_t>(n)] - xp;
+        Dp.noalias() += (N * r) * r.transpose();  // D_p, h^2/4 I inside a B-spline grid
         // bilinear: B_p D_p^-1 is the velocity gradient (D_p singular on a grid line)
         if (fromGradient_) B.noalias() += velocity[n] * weights.dN[k0 + k].transpose();
         else B.noalias() += (N * velocity[n]) * r.transpose();  // B_p (Jiang et al. 2015)
     }
-    PlaneSpace::Gradient& C = p.affine[q];
-    C = fromGradient_ ? B : PlaneSpace::Gradient(B * D.inverse());
-    p.affineEnergy[q] = 0.5 * p.m[q] * (C * D * C.transpose()).trace();
+    typename Space<D>::Gradient& C = p.affine[q];
+    C = fromGradient_ ? B : typename Space<D>::Gradient(B * Dp.inverse());
+    p.affineEnergy[q] = 0.5 * p.m[q] * (C * Dp * C.transpose()).trace();
 }
 
-void AffineVelocity::at(StepPoint, EngineView& e, double dt)
+template <int D>
+void AffineVelocity<D>::at(StepPoint, EngineView<D>& e, double dt)
 {
     // MUSL: C_p again, from the remapped nodal velocity: a mass-weighted mean of the
     // particles' motion, where v^{t+1} of a node that a particle barely touches holds
     // dt F/m of a tiny mass (the small-mass instability, Sulsky et al. 1995).
-    Particles& p = e.particles;
+    Particles<D>& p = e.particles;
     const auto nParticles = static_cast<long>(p.size());
     parallelFor(nParticles, [&](long q) {
         if (e.isRigid(static_cast<std::size_t>(q))) return;
-        const std::vector<Vector2>& velocity = e.coupling.velocity(e.grid, e.coupling.fieldOf(p.body[q]));
+        const std::vector<Vector>& velocity = e.coupling.velocity(e.grid, e.coupling.fieldOf(p.body[q]));
         form(p, e.weights, static_cast<std::size_t>(q), velocity, e.remapCentre(static_cast<std::size_t>(q), dt));
     });
 }
+
+template class AffineVelocity<2>;
 
 } // namespace gpic

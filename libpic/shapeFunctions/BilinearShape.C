@@ -1,41 +1,45 @@
 #include "shapeFunctions/BilinearShape.H"
 
 #include "core/Threads.H"
+#include "shapeFunctions/TensorProduct.H"
 
 namespace gpic {
 
-GPIC_REGISTER(ShapeFunction, BilinearShape, "bilinear")
+GPIC_REGISTER_DIMS(ShapeFunction, BilinearShape, "bilinear")
 
-void BilinearShape::evaluate(const Grid& grid, const Particles& p, ShapeWeights& w) const
+template <int D> void BilinearShape<D>::evaluate(const Grid<D>& grid, const Particles<D>& p, ShapeWeights<D>& w) const
 {
-    w.resize(p.size(), 4);
-    const Vector2 h = grid.cellSize();
+    using Vector = typename Space<D>::Vector;
+    constexpr int nodes = power(2, D);
+    constexpr NodeOrder<D, 2> order = cornerOrder<D>();
+    w.resize(p.size(), nodes);
+    const Vector h = grid.cellSize();
     const auto n = static_cast<long>(p.size());
     // The arrays' pointers in locals: Eigen's SSE stores may alias anything, and the compiler
     // would otherwise reload them after each weight written.
     int* node = w.node.data();
     double* N = w.N.data();
-    Vector2* dN = w.dN.data();
-    const Vector2* x = p.x.data();
+    Vector* dN = w.dN.data();
+    const Vector* x = p.x.data();
 #pragma omp parallel for schedule(static) if (n >= minParallelWork())
     for (long q = 0; q < n; ++q) {
-        int i, j;
-        grid.cellOf(x[q], i, j);
-        const Vector2 local = x[q] - grid.nodePosition(i, j);
-        const double xi = local.x() / h.x(), eta = local.y() / h.y();
-        const std::size_t k = q * 4;
-        // Counter-clockwise from the lower-left node.
-        const int nodes[4] = {grid.node(i, j), grid.node(i + 1, j), grid.node(i + 1, j + 1),
-                              grid.node(i, j + 1)};
-        const double Nx[4] = {1 - xi, xi, xi, 1 - xi}, Ny[4] = {1 - eta, 1 - eta, eta, eta};
-        const double dNx[4] = {-1 / h.x(), 1 / h.x(), 1 / h.x(), -1 / h.x()};
-        const double dNy[4] = {-1 / h.y(), -1 / h.y(), 1 / h.y(), 1 / h.y()};
-        for (int a = 0; a < 4; ++a) {
-            node[k + a] = nodes[a];
-            N[k + a] = Nx[a] * Ny[a];
-            dN[k + a] = Vector2(dNx[a] * Ny[a], Nx[a] * dNy[a]);
+        AxisWeights<D, 2> axis;
+        axis.first = grid.cellOf(x[q]);
+        const Vector local = x[q] - grid.nodePosition(axis.first);
+        for (int a = 0; a < D; ++a) {
+            const double xi = local[a] / h[a];
+            axis.S[a][0] = 1 - xi;
+            axis.S[a][1] = xi;
+            axis.dS[a][0] = -1 / h[a];
+            axis.dS[a][1] = 1 / h[a];
+            axis.exists[a][0] = axis.exists[a][1] = true;
         }
+        const std::size_t k = q * nodes;
+        writeTensorProduct(grid, axis, order, node + k, N + k, dN + k);
     }
 }
+
+template class BilinearShape<2>;
+template class BilinearShape<3>;
 
 } // namespace gpic

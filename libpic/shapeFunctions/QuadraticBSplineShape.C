@@ -1,13 +1,14 @@
 #include "shapeFunctions/QuadraticBSplineShape.H"
 
 #include "core/Threads.H"
+#include "shapeFunctions/TensorProduct.H"
 
 #include <algorithm>
 #include <cmath>
 
 namespace gpic {
 
-GPIC_REGISTER(ShapeFunction, QuadraticBSplineShape, "quadraticBSpline")
+GPIC_REGISTER_DIMS(ShapeFunction, QuadraticBSplineShape, "quadraticBSpline")
 
 namespace {
 //- Knot k of the open knot vector 0 0 0 3/2 5/2 ... n-3/2 n n n (in cells).
@@ -33,12 +34,12 @@ double linear(double u, double a, double b, double c, int n)
 }
 } // namespace
 
-int QuadraticBSplineShape::firstNode(double u, int n)
+int QuadraticBSpline::firstNode(double u, int n)
 {
     return n < 2 ? 0 : std::clamp(static_cast<int>(std::floor(u - 0.5)), 0, n - 2);
 }
 
-void QuadraticBSplineShape::weight1D(int i, double u, int n, double& S, double& dS)
+void QuadraticBSpline::weight1D(int i, double u, int n, double& S, double& dS)
 {
     if (n == 1) {  // one cell across (a bar, a layer): the linear splines of its two nodes
         S = i == 0 ? 1.0 - u : (i == 1 ? u : 0.0);
@@ -53,37 +54,44 @@ void QuadraticBSplineShape::weight1D(int i, double u, int n, double& S, double& 
     dS = 2.0 * (left - right);
 }
 
-Vector2 QuadraticBSplineShape::affineCentre(const Grid& grid, int n) const
+double QuadraticBSpline::greville(int i, int n) { return n == 1 ? double(i) : 0.5 * (knot(i + 1, n) + knot(i + 2, n)); }
+
+template <int D> typename Space<D>::Vector QuadraticBSplineShape<D>::affineCentre(const Grid<D>& grid, int n) const
 {
-    const int i = n % (grid.nx() + 1), j = n / (grid.nx() + 1);
-    const auto greville = [](int k, int cells) { return cells == 1 ? double(k) : 0.5 * (knot(k + 1, cells) + knot(k + 2, cells)); };
-    return grid.origin() + Vector2(greville(i, grid.nx()) * grid.cellSize().x(), greville(j, grid.ny()) * grid.cellSize().y());
+    const typename Grid<D>::Index i = grid.nodeIndex(n);
+    Vector x;
+    for (int a = 0; a < D; ++a)
+        x[a] = grid.origin()[a] + QuadraticBSpline::greville(i[a], grid.cells(a)) * grid.cellSize()[a];
+    return x;
 }
 
-void QuadraticBSplineShape::evaluate(const Grid& grid, const Particles& p, ShapeWeights& w) const
+template <int D>
+void QuadraticBSplineShape<D>::evaluate(const Grid<D>& grid, const Particles<D>& p, ShapeWeights<D>& w) const
 {
-    w.resize(p.size(), 9);
-    const Vector2 h = grid.cellSize();
+    constexpr int nodes = power(3, D);
+    constexpr NodeOrder<D, 3> order = axisOrder<D, 3>();
+    w.resize(p.size(), nodes);
+    const Vector h = grid.cellSize();
     const auto n = static_cast<long>(p.size());
 #pragma omp parallel for schedule(static) if (n >= minParallelWork())
     for (long q = 0; q < n; ++q) {
-        const Vector2 u = (p.x[q] - grid.origin()).cwiseQuotient(h);
-        const int i0 = firstNode(u.x(), grid.nx()), j0 = firstNode(u.y(), grid.ny());
-        double Sx[3], dSx[3], Sy[3], dSy[3];
-        for (int a = 0; a < 3; ++a) {
-            weight1D(i0 + a, u.x(), grid.nx(), Sx[a], dSx[a]);
-            weight1D(j0 + a, u.y(), grid.ny(), Sy[a], dSy[a]);
-        }
-        std::size_t k = q * 9;
-        for (int b = 0; b < 3; ++b)
-            for (int a = 0; a < 3; ++a, ++k) {
+        const Vector u = (p.x[q] - grid.origin()).cwiseQuotient(h);
+        AxisWeights<D, 3> axis;
+        for (int a = 0; a < D; ++a) {
+            const int cells = grid.cells(a);
+            axis.first[a] = QuadraticBSpline::firstNode(u[a], cells);
+            for (int k = 0; k < 3; ++k) {
+                QuadraticBSpline::weight1D(axis.first[a] + k, u[a], cells, axis.S[a][k], axis.dS[a][k]);
                 // One cell across an axis: its third slot has no node.
-                const bool exists = i0 + a <= grid.nx() && j0 + b <= grid.ny();
-                w.node[k] = exists ? grid.node(i0 + a, j0 + b) : -1;
-                w.N[k] = exists ? Sx[a] * Sy[b] : 0.0;
-                w.dN[k] = exists ? Vector2(dSx[a] * Sy[b] / h.x(), Sx[a] * dSy[b] / h.y()) : Vector2::Zero();
+                axis.exists[a][k] = axis.first[a] + k <= cells;
             }
+        }
+        const std::size_t k = q * nodes;
+        writeTensorProduct(grid, axis, order, w.node.data() + k, w.N.data() + k, w.dN.data() + k, &h);
     }
 }
+
+template class QuadraticBSplineShape<2>;
+template class QuadraticBSplineShape<3>;
 
 } // namespace gpic

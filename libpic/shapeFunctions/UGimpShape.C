@@ -1,14 +1,16 @@
 #include "shapeFunctions/UGimpShape.H"
 
 #include "core/Threads.H"
+#include "shapeFunctions/TensorProduct.H"
+
 #include <algorithm>
 #include <cmath>
 
 namespace gpic {
 
-GPIC_REGISTER(ShapeFunction, UGimpShape, "uGIMP")
+GPIC_REGISTER_DIMS(ShapeFunction, UGimpShape, "uGIMP")
 
-void UGimpShape::weight1D(double r, double h, double lp, double& S, double& dS)
+void UGimp::weight1D(double r, double h, double lp, double& S, double& dS)
 {
     const double a = std::abs(r), sign = r < 0 ? -1.0 : 1.0;
     if (a < lp) {
@@ -27,7 +29,7 @@ void UGimpShape::weight1D(double r, double h, double lp, double& S, double& dS)
     }
 }
 
-void UGimpShape::weightRadial(double rp, double ri, double h, double lp, double& S, double& dS, double& T)
+void UGimp::weightRadial(double rp, double ri, double h, double lp, double& S, double& dS, double& T)
 {
     const double r1 = std::max(rp - lp, 0.0), r2 = rp + lp;
     const double ringArea = 0.5 * (r2 * r2 - r1 * r1);  // int r dr over the domain
@@ -52,46 +54,51 @@ void UGimpShape::weightRadial(double rp, double ri, double h, double lp, double&
     T = NSum / ringArea;
 }
 
-void UGimpShape::evaluate(const Grid& grid, const Particles& p, ShapeWeights& w) const
+template <int D> void UGimpShape<D>::evaluate(const Grid<D>& grid, const Particles<D>& p, ShapeWeights<D>& w) const
 {
-    w.resize(p.size(), 9);
+    using Vector = typename Space<D>::Vector;
+    constexpr int nodes = power(3, D);
+    constexpr NodeOrder<D, 3> order = axisOrder<D, 3>();
+    w.resize(p.size(), nodes);
     const bool rings = grid.axisymmetric();
     w.hoop.resize(rings ? w.N.size() : 0);
-    const Vector2 h = grid.cellSize();
+    const Vector h = grid.cellSize();
     const auto n = static_cast<long>(p.size());
 #pragma omp parallel for schedule(static) if (n >= minParallelWork())
     for (long q = 0; q < n; ++q) {
-        int i, j;
-        grid.cellOf(p.x[q], i, j);
-        const Vector2 local = p.x[q] - grid.nodePosition(i, j);
-        // The three nodes whose support can reach the particle in each direction.
-        const int i0 = local.x() < 0.5 * h.x() ? i - 1 : i;
-        const int j0 = local.y() < 0.5 * h.y() ? j - 1 : j;
-        const Vector2 lp = p.halfSize[q];
-        std::size_t k = q * 9;
-        for (int b = 0; b < 3; ++b) {
-            const int jn = j0 + b;
-            double Sy = 0, dSy = 0;
-            if (jn >= 0 && jn <= grid.ny())
-                weight1D(p.x[q].y() - (grid.origin().y() + jn * h.y()), h.y(), lp.y(), Sy, dSy);
-            for (int a = 0; a < 3; ++a, ++k) {
-                const int in = i0 + a;
-                double Sx = 0, dSx = 0, Tx = 0;
-                if (in >= 0 && in <= grid.nx()) {
-                    const double xi = grid.origin().x() + in * h.x();
-                    if (rings)
-                        weightRadial(p.x[q].x(), xi, h.x(), lp.x(), Sx, dSx, Tx);
-                    else
-                        weight1D(p.x[q].x() - xi, h.x(), lp.x(), Sx, dSx);
-                }
-                const bool inside = in >= 0 && in <= grid.nx() && jn >= 0 && jn <= grid.ny();
-                w.node[k] = inside ? grid.node(in, jn) : -1;
-                w.N[k] = inside ? Sx * Sy : 0.0;
-                w.dN[k] = inside ? Vector2(dSx * Sy, Sx * dSy) : Vector2::Zero();
-                if (rings) w.hoop[k] = inside ? Tx * Sy : 0.0;
+        const Vector& xp = p.x[q];
+        const typename Grid<D>::Index cell = grid.cellOf(xp);
+        const Vector local = xp - grid.nodePosition(cell);
+        const Vector lp = p.halfSize[q];
+        AxisWeights<D, 3> axis;
+        double T[3] = {0, 0, 0};  // the hoop weights along the radius x1
+        for (int a = 0; a < D; ++a) {
+            // The three nodes whose support can reach the particle.
+            axis.first[a] = local[a] < 0.5 * h[a] ? cell[a] - 1 : cell[a];
+            for (int k = 0; k < 3; ++k) {
+                const int i = axis.first[a] + k;
+                axis.exists[a][k] = i >= 0 && i <= grid.cells(a);
+                axis.S[a][k] = axis.dS[a][k] = 0.0;
+                if (!axis.exists[a][k]) continue;
+                const double xi = grid.origin()[a] + i * h[a];
+                if (a == 0 && rings)
+                    UGimp::weightRadial(xp[0], xi, h[0], lp[0], axis.S[0][k], axis.dS[0][k], T[k]);
+                else
+                    UGimp::weight1D(xp[a] - xi, h[a], lp[a], axis.S[a][k], axis.dS[a][k]);
             }
         }
+        const std::size_t k = q * nodes;
+        writeTensorProduct(grid, axis, order, w.node.data() + k, w.N.data() + k, w.dN.data() + k);
+        if (rings)  // <N_i / r> = T_i(r) S_i(z): the ring average along the radius only
+            for (int l = 0; l < nodes; ++l) {
+                double hoop = T[order[l][0]];
+                for (int a = 1; a < D; ++a) hoop *= axis.S[a][order[l][a]];
+                w.hoop[k + l] = w.node[k + l] < 0 ? 0.0 : hoop;
+            }
     }
 }
+
+template class UGimpShape<2>;
+template class UGimpShape<3>;
 
 } // namespace gpic

@@ -66,18 +66,18 @@ const std::string& EndCondition::kindName() const
     return names[static_cast<int>(kind_)];
 }
 
-double EndCondition::maxSpeed(const MpmSolver& solver)
+double EndCondition::maxSpeed(const MpmSolver<2>& solver)
 {
-    const Particles& p = solver.particles();
+    const Particles<2>& p = solver.particles();
     double v2 = 0;
     for (std::size_t q = 0; q < p.size(); ++q)
         if (!solver.rigidBody(p.body[q])) v2 = std::max(v2, p.v[q].squaredNorm());
     return std::sqrt(v2);
 }
 
-Vector2 EndCondition::centreOf(const MpmSolver& solver, int b)
+Vector2 EndCondition::centreOf(const MpmSolver<2>& solver, int b)
 {
-    const Particles& p = solver.particles();
+    const Particles<2>& p = solver.particles();
     double m = 0;
     Vector2 c = Vector2::Zero();
     for (std::size_t q = 0; q < p.size(); ++q)
@@ -88,7 +88,7 @@ Vector2 EndCondition::centreOf(const MpmSolver& solver, int b)
     return m > 0 ? Vector2(c / m) : c;
 }
 
-void EndCondition::start(const MpmSolver& solver, double t, long step)
+void EndCondition::start(const MpmSolver<2>& solver, double t, long step)
 {
     tStart_ = t;
     stepStart_ = step;
@@ -104,7 +104,7 @@ double EndCondition::landOn() const
     return t;
 }
 
-bool EndCondition::reached(const MpmSolver& solver, double t, long step, double dt, std::string& reason,
+bool EndCondition::reached(const MpmSolver<2>& solver, double t, long step, double dt, std::string& reason,
                            bool& timedOut) const
 {
     timedOut = false;

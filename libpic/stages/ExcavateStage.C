@@ -41,7 +41,7 @@ ExcavateStage::ExcavateStage(const Dictionary& dict, const StageSetup& setup) : 
                      : setup.cellHeight;
 }
 
-bool ExcavateStage::inRegion(const Particles& p, std::size_t q) const
+bool ExcavateStage::inRegion(const Particles<2>& p, std::size_t q) const
 {
     if (p.body[q] != body_) return false;
     for (const auto& r : regions_)
@@ -49,9 +49,9 @@ bool ExcavateStage::inRegion(const Particles& p, std::size_t q) const
     return false;
 }
 
-bool ExcavateStage::digLayer(MpmSolver& solver, ParticlePool& pool, double t, long step)
+bool ExcavateStage::digLayer(MpmSolver<2>& solver, ParticlePool& pool, double t, long step)
 {
-    const Particles& p = solver.particles();
+    const Particles<2>& p = solver.particles();
     double highest = -std::numeric_limits<double>::infinity();
     for (std::size_t q = 0; q < p.size(); ++q)
         if (inRegion(p, q)) highest = std::max(highest, p.x[q].y());
@@ -61,7 +61,7 @@ bool ExcavateStage::digLayer(MpmSolver& solver, ParticlePool& pool, double t, lo
     const double bottom = top_ - (band_ + 1) * thickness_;
     std::size_t count = 0;
     const double mass = pool.remove(
-        solver, [&](const Particles& s, std::size_t q) { return inRegion(s, q) && s.x[q].y() >= bottom; }, &count);
+        solver, [&](const Particles<2>& s, std::size_t q) { return inRegion(s, q) && s.x[q].y() >= bottom; }, &count);
     removed_ += mass;
     ++layers_;
     until().start(solver, t, step);
@@ -70,9 +70,9 @@ bool ExcavateStage::digLayer(MpmSolver& solver, ParticlePool& pool, double t, lo
     return true;
 }
 
-StageEvent ExcavateStage::started(MpmSolver& solver, ParticlePool& pool, double t, long step)
+StageEvent ExcavateStage::started(MpmSolver<2>& solver, ParticlePool& pool, double t, long step)
 {
-    const Particles& p = solver.particles();
+    const Particles<2>& p = solver.particles();
     top_ = -std::numeric_limits<double>::infinity();
     for (std::size_t q = 0; q < p.size(); ++q)
         if (inRegion(p, q)) top_ = std::max(top_, p.x[q].y() + p.halfSize[q].y());
@@ -81,7 +81,7 @@ StageEvent ExcavateStage::started(MpmSolver& solver, ParticlePool& pool, double 
     return StageEvent::particlesChanged;
 }
 
-StageEvent ExcavateStage::afterStep(MpmSolver& solver, ParticlePool& pool, double t, long step, double dt)
+StageEvent ExcavateStage::afterStep(MpmSolver<2>& solver, ParticlePool& pool, double t, long step, double dt)
 {
     std::string why;
     bool timedOut = false;

@@ -57,15 +57,15 @@ Vector2 GeostaticFillStage::up() const
     return g.norm() > 0 ? Vector2(-g / g.norm()) : Vector2(0.0, 1.0);
 }
 
-bool GeostaticFillStage::addLayer(MpmSolver& solver, ParticlePool& pool, double t, long step)
+bool GeostaticFillStage::addLayer(MpmSolver<2>& solver, ParticlePool& pool, double t, long step)
 {
     // Heights and depths are measured against gravity, so a scene turned on the grid (gravity
     // not along -x2, seed fig. 6.19) fills in layers normal to gravity, as the seed's upright
     // one does; with gravity along -x2 the height is x2.
     const Vector2 u = up();
-    const auto height = [&](const Particles& p, std::size_t q) { return p.x[q].dot(u); };
-    const Particles& sleeping = pool.dormant();
-    const auto waiting = [&](const Particles& p, std::size_t q) { return fills(p.body[q]) && height(p, q) < upTo_; };
+    const auto height = [&](const Particles<2>& p, std::size_t q) { return p.x[q].dot(u); };
+    const Particles<2>& sleeping = pool.dormant();
+    const auto waiting = [&](const Particles<2>& p, std::size_t q) { return fills(p.body[q]) && height(p, q) < upTo_; };
     double lowest = std::numeric_limits<double>::infinity();
     for (std::size_t q = 0; q < sleeping.size(); ++q)
         if (waiting(sleeping, q)) lowest = std::min(lowest, height(sleeping, q));
@@ -79,9 +79,9 @@ bool GeostaticFillStage::addLayer(MpmSolver& solver, ParticlePool& pool, double 
     double surface = -std::numeric_limits<double>::infinity();
     std::size_t count = 0;
     pool.exchange(
-        solver, [](const Particles&, std::size_t) { return false; },
-        [&](const Particles& p, std::size_t q) { return waiting(p, q) && height(p, q) < top; },
-        [&](Particles& p, std::size_t begin, std::size_t end) {
+        solver, [](const Particles<2>&, std::size_t) { return false; },
+        [&](const Particles<2>& p, std::size_t q) { return waiting(p, q) && height(p, q) < top; },
+        [&](Particles<2>& p, std::size_t begin, std::size_t end) {
             // The free surface of the new layer: the top of its particles' domains.
             for (std::size_t q = begin; q < end; ++q)
                 surface = std::max(surface, height(p, q) + p.halfSize[q].cwiseProduct(u).cwiseAbs().sum());
@@ -108,13 +108,13 @@ bool GeostaticFillStage::addLayer(MpmSolver& solver, ParticlePool& pool, double 
     return true;
 }
 
-StageEvent GeostaticFillStage::started(MpmSolver& solver, ParticlePool& pool, double t, long step)
+StageEvent GeostaticFillStage::started(MpmSolver<2>& solver, ParticlePool& pool, double t, long step)
 {
     if (!addLayer(solver, pool, t, step)) return end("nothing left to fill");
     return StageEvent::particlesChanged;
 }
 
-StageEvent GeostaticFillStage::afterStep(MpmSolver& solver, ParticlePool& pool, double t, long step, double dt)
+StageEvent GeostaticFillStage::afterStep(MpmSolver<2>& solver, ParticlePool& pool, double t, long step, double dt)
 {
     std::string why;
     bool timedOut = false;

@@ -7,27 +7,27 @@
 
 namespace gpic {
 
-Particles selectParticles(const Particles& from, const std::vector<std::size_t>& which)
+Particles<2> selectParticles(const Particles<2>& from, const std::vector<std::size_t>& which)
 {
-    Particles out = from;
+    Particles<2> out = from;
     out.reorder(which);
     return out;
 }
 
-bool ParticlePool::exchange(MpmSolver& solver, const Predicate& sleep, const Predicate& wake, const OnWake& onWake)
+bool ParticlePool::exchange(MpmSolver<2>& solver, const Predicate& sleep, const Predicate& wake, const OnWake& onWake)
 {
-    const Particles& active = solver.particles();
+    const Particles<2>& active = solver.particles();
     std::vector<std::size_t> keep, asleep, woken, stay;
     for (std::size_t q = 0; q < active.size(); ++q) (sleep(active, q) ? asleep : keep).push_back(q);
     for (std::size_t q = 0; q < dormant_.size(); ++q) (wake(dormant_, q) ? woken : stay).push_back(q);
     if (asleep.empty() && woken.empty()) return false;
 
-    Particles next = selectParticles(active, keep);
+    Particles<2> next = selectParticles(active, keep);
     const std::size_t begin = next.size();
     next.append(selectParticles(dormant_, woken));
     if (onWake) onWake(next, begin, next.size());
 
-    Particles pool = selectParticles(dormant_, stay);
+    Particles<2> pool = selectParticles(dormant_, stay);
     pool.append(selectParticles(active, asleep));
     std::vector<std::size_t> byId(pool.size());
     std::iota(byId.begin(), byId.end(), std::size_t(0));
@@ -38,9 +38,9 @@ bool ParticlePool::exchange(MpmSolver& solver, const Predicate& sleep, const Pre
     return true;
 }
 
-double ParticlePool::remove(MpmSolver& solver, const Predicate& remove, std::size_t* count)
+double ParticlePool::remove(MpmSolver<2>& solver, const Predicate& remove, std::size_t* count)
 {
-    const Particles& active = solver.particles();
+    const Particles<2>& active = solver.particles();
     std::vector<std::size_t> keep;
     double mass = 0;
     for (std::size_t q = 0; q < active.size(); ++q) {

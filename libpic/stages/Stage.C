@@ -61,7 +61,7 @@ Stage::Stage(const Dictionary& dict, const StageSetup& setup, double defaultDamp
             const int b = bodyId(d, key, key);
             if (!d.isDict(key)) d.fail(key, "'" + key + "' needs a driver sub-dictionary { type ...; }");
             const Dictionary& driver = d.subDict(key);
-            drivers_[static_cast<std::size_t>(b)] = RigidBodyDriver::New(driver);
+            drivers_[static_cast<std::size_t>(b)] = RigidBodyDriver<2>::New(driver);
             if (driver.found("rotation"))
                 rotationFixed_[static_cast<std::size_t>(b)] = driver.getWord("rotation", {"fixed", "free"}) == "fixed";
         }
@@ -113,41 +113,41 @@ std::string Stage::bodyList() const
     return listOf(names);
 }
 
-void Stage::configure(MpmSolver& solver, double t0)
+void Stage::configure(MpmSolver<2>& solver, double t0)
 {
     solver.setDamping(damping_);
     solver.setMassScaling(massScaling_);
     solver.setGravity(gravity());
     for (int s = 0; s < 4; ++s) {
-        BoundaryCondition& bc = solver.boundary(static_cast<GridSide>(s));
+        BoundaryCondition<2>& bc = solver.boundary(static_cast<GridSide>(s));
         if (bc.hasOpening()) bc.setOpen(openings_[s] != 0);
     }
     solver.refreshOpenings();
-    std::vector<std::unique_ptr<RigidBodyDriver>> drivers(drivers_.size());
+    std::vector<std::unique_ptr<RigidBodyDriver<2>>> drivers(drivers_.size());
     for (std::size_t b = 0; b < drivers_.size(); ++b)
         if (drivers_[b]) drivers[b] = std::make_unique<StageTimeDriver>(std::move(drivers_[b]), t0);
     solver.setRigidBodies(std::move(drivers));
     if (auto* rotation = solver.find<CosseratRotation>()) rotation->setRigidFixed(rotationFixed_);
 }
 
-StageEvent Stage::begin(MpmSolver& solver, ParticlePool& pool, double t, long step)
+StageEvent Stage::begin(MpmSolver<2>& solver, ParticlePool& pool, double t, long step)
 {
     pool.exchange(
-        solver, [&](const Particles& p, std::size_t q) { return !isActive(p.body[q]); },
-        [&](const Particles& p, std::size_t q) { return isActive(p.body[q]) && wakesAtBegin(p, q); });
+        solver, [&](const Particles<2>& p, std::size_t q) { return !isActive(p.body[q]); },
+        [&](const Particles<2>& p, std::size_t q) { return isActive(p.body[q]) && wakesAtBegin(p, q); });
     configure(solver, t);
     until_.start(solver, t, step);
     return started(solver, pool, t, step);
 }
 
-void Stage::resume(MpmSolver& solver, const Dictionary& progress, double stageStart)
+void Stage::resume(MpmSolver<2>& solver, const Dictionary& progress, double stageStart)
 {
     configure(solver, stageStart);
     until_.readProgress(progress.subDict("clock"));
     readOwnProgress(progress);
 }
 
-StageEvent Stage::afterStep(MpmSolver& solver, ParticlePool&, double t, long step, double dt)
+StageEvent Stage::afterStep(MpmSolver<2>& solver, ParticlePool&, double t, long step, double dt)
 {
     std::string why;
     bool timedOut = false;

@@ -40,7 +40,7 @@ bool StageSequence::changesParticles() const
     return false;
 }
 
-void StageSequence::restore(const Dictionary* stageFile, Particles dormant)
+void StageSequence::restore(const Dictionary* stageFile, Particles<2> dormant)
 {
     pool_.dormant() = std::move(dormant);
     fresh_ = stageFile == nullptr;
@@ -69,7 +69,7 @@ void StageSequence::logBegin(double t, long step) const
            << ": bodies " << s.bodyList() << ", damping " << s.damping() << "\n";
 }
 
-void StageSequence::start(MpmSolver& solver, double t, long step)
+void StageSequence::start(MpmSolver<2>& solver, double t, long step)
 {
     // Rows of stages.dat from a run this one replaces (a restart from an earlier time) go.
     const fs::path dat = fs::path(caseDir_) / "postProcessing/stages.dat";
@@ -96,13 +96,13 @@ void StageSequence::start(MpmSolver& solver, double t, long step)
     if (fresh_) {
         // Everything sleeps until a stage wakes it: a fill starts from an empty box.
         pool_.exchange(
-            solver, [](const Particles&, std::size_t) { return true; }, [](const Particles&, std::size_t) { return false; });
+            solver, [](const Particles<2>&, std::size_t) { return true; }, [](const Particles<2>&, std::size_t) { return false; });
         fresh_ = false;
     }
     beginNext(solver, t, step);
 }
 
-void StageSequence::beginNext(MpmSolver& solver, double t, long step)
+void StageSequence::beginNext(MpmSolver<2>& solver, double t, long step)
 {
     while (!done()) {
         begun_ = true;
@@ -114,7 +114,7 @@ void StageSequence::beginNext(MpmSolver& solver, double t, long step)
     }
 }
 
-StageEvent StageSequence::afterStep(MpmSolver& solver, double t, long step, double dt)
+StageEvent StageSequence::afterStep(MpmSolver<2>& solver, double t, long step, double dt)
 {
     if (done()) return StageEvent::none;
     Stage& s = *stages_[index_];

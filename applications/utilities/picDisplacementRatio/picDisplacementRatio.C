@@ -44,7 +44,7 @@ int main(int argc, char** argv)
             const std::string to = findTime(caseDir, vm["to"].as<double>());
             const double threshold = vm["threshold"].as<double>();
             if (!(threshold > 0)) throw InputError("", 0, "-threshold: expected a number > 0");
-            Particles a, b;
+            Particles<2> a, b;
             double ta = 0, tb = 0;
             std::vector<std::string> bodyNames;
             readParticles((fs::path(caseDir) / from / "particles.vtp").string(), a, ta, nullptr, &bodyNames);

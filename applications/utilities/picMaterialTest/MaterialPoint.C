@@ -4,7 +4,7 @@
 
 namespace gpic {
 
-MaterialPoint::MaterialPoint(const Material& material, const SymTensor& sigma0)
+MaterialPoint::MaterialPoint(const Material<2>& material, const SymTensor& sigma0)
     : material_(&material)
 {
     material.declareFields(particles_);
@@ -18,7 +18,7 @@ MaterialPoint::MaterialPoint(const Material& material, const SymTensor& sigma0)
 
 void MaterialPoint::apply(const SymTensor& dEps, double dOmega, double dt)
 {
-    Particles& p = particles_;
+    Particles<2>& p = particles_;
     p.dEps[0] = dEps;  // de33: zero in plane strain, the hoop strain of an axisymmetric ring
     p.dOmega[0] = dOmega;
     p.eps[0] += p.dEps[0];

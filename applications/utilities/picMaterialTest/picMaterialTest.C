@@ -42,7 +42,7 @@ namespace fs = std::filesystem;
 //- One test, read and checked before any runs.
 struct TestSetup {
     std::string name;
-    std::shared_ptr<const Material> material;
+    std::shared_ptr<const Material<2>> material;
     LoadPath path;
     SymTensor startStress;
     double deltaT;
@@ -59,16 +59,16 @@ const Dictionary& holder(const Dictionary& test, const Dictionary& top, const st
 //- The materials named so far, built once each, and constant/materials once it is read.
 struct MaterialLibrary {
     std::optional<Dictionary> file;
-    std::map<std::string, std::shared_ptr<const Material>> byName;
+    std::map<std::string, std::shared_ptr<const Material<2>>> byName;
 };
 
-std::shared_ptr<const Material> selectMaterial(const Dictionary& dict, const std::string& caseDir,
+std::shared_ptr<const Material<2>> selectMaterial(const Dictionary& dict, const std::string& caseDir,
                                                MaterialLibrary& library)
 {
     if (!dict.found("material"))
         dict.fail("material", "keyword 'material' is undefined in dictionary " + dict.name() +
                                   "; give a name from constant/materials or { type ...; }");
-    if (dict.isDict("material")) return Material::New(dict.subDict("material"));
+    if (dict.isDict("material")) return Material<2>::New(dict.subDict("material"));
     const std::string name = dict.get<std::string>("material");
     if (library.byName.count(name)) return library.byName[name];
     if (!library.file) library.file = readCaseFile(caseDir, "constant/materials");
@@ -80,7 +80,7 @@ std::shared_ptr<const Material> selectMaterial(const Dictionary& dict, const std
         dict.fail("material", "material '" + name + "' is not in constant/materials; valid choices: " +
                                   valid);
     }
-    std::shared_ptr<const Material> material = Material::New(materials.subDict(name));
+    std::shared_ptr<const Material<2>> material = Material<2>::New(materials.subDict(name));
     materials.subDict(name).warnUnused();
     return library.byName[name] = material;
 }

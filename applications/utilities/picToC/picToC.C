@@ -50,18 +50,18 @@ int main(int argc, char** argv)
     boost::program_options::options_description options("picToC options");
     return gpic::applicationMain(argc, argv, "picToC: list the run-time selectable types", options,
                                  [](const auto&) {
-                                     list<gpic::Material>();
-                                     list<gpic::BoundaryCondition>();
-                                     list<gpic::ContactLaw>();
-                                     list<gpic::ContactNormals>();
-                                     list<gpic::ContactPass>();
-                                     list<gpic::ShapeFunction>();
+                                     list<gpic::Material<2>>();
+                                     list<gpic::BoundaryCondition<2>>();
+                                     list<gpic::ContactLaw<2>>();
+                                     list<gpic::ContactNormals<2>>();
+                                     list<gpic::ContactPass<2>>();
+                                     list<gpic::ShapeFunction<2>>();
                                      list<gpic::UpdateScheme>();
                                      list<gpic::ParticleTransfer>();
                                      list<gpic::FunctionObject>();
                                      list<gpic::Shape>();
-                                     list<gpic::RigidBodyDriver>();
-                                     list<gpic::ParticleLoad>();
+                                     list<gpic::RigidBodyDriver<2>>();
+                                     list<gpic::ParticleLoad<2>>();
                                      list<gpic::Stage>();
                                  });
 }

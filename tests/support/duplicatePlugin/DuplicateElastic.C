@@ -5,15 +5,15 @@
 namespace gpic {
 namespace {
 
-class DuplicateElastic : public Material {
+class DuplicateElastic : public Material<2> {
 public:
-    using Material::Material;
+    using Material<2>::Material;
     double waveSpeed() const override { return 1.0; }
-    void updateStress(Particles&, const ParticleBlock&, double) const override {}
+    void updateStress(Particles<2>&, const ParticleBlock&, double) const override {}
 };
 
 } // namespace
 
-GPIC_REGISTER(Material, DuplicateElastic, "linearElastic")
+GPIC_REGISTER(Material<2>, DuplicateElastic, "linearElastic")
 
 } // namespace gpic

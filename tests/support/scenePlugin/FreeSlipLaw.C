@@ -5,7 +5,7 @@
 
 namespace scenePlugin {
 
-class FreeSlipLaw : public gpic::ContactLaw {
+class FreeSlipLaw : public gpic::ContactLaw<2> {
 public:
     FreeSlipLaw(const gpic::Dictionary&, const std::vector<std::string>&) {}
     bool needsBodyFields() const override { return true; }
@@ -17,6 +17,6 @@ public:
     }
 };
 
-GPIC_REGISTER(gpic::ContactLaw, FreeSlipLaw, "freeSlip")
+GPIC_REGISTER(gpic::ContactLaw<2>, FreeSlipLaw, "freeSlip")
 
 } // namespace scenePlugin

@@ -14,9 +14,9 @@ public:
     {
         return {gpic::StepPoint::afterParticlesToGrid, gpic::StepPoint::afterGridUpdate};
     }
-    void at(gpic::StepPoint point, const gpic::MpmSolver& solver) override
+    void at(gpic::StepPoint point, const gpic::MpmSolver<2>& solver) override
     {
-        const gpic::Grid& g = solver.grid();
+        const gpic::Grid<2>& g = solver.grid();
         gpic::Vector2 P = gpic::Vector2::Zero();
         double M = 0;
         for (int n : g.active) {
@@ -28,7 +28,7 @@ public:
         mass_ = M;
         stepStart_ = solver.time();
     }
-    void write(const gpic::MpmSolver&, double time) override
+    void write(const gpic::MpmSolver<2>&, double time) override
     {
         std::ofstream& os = file("gridMomentum.dat");
         if (os.tellp() == 0) os << "# time stepStart mass pyBefore pyAfter\n";

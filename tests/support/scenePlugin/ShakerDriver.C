@@ -8,7 +8,7 @@
 
 namespace scenePlugin {
 
-class ShakerDriver : public gpic::RigidBodyDriver {
+class ShakerDriver : public gpic::RigidBodyDriver<2> {
 public:
     explicit ShakerDriver(const gpic::Dictionary& dict)
         : A_(dict.get<double>("amplitude")),
@@ -27,6 +27,6 @@ private:
     double A_, omega_;
 };
 
-GPIC_REGISTER(gpic::RigidBodyDriver, ShakerDriver, "shaker")
+GPIC_REGISTER(gpic::RigidBodyDriver<2>, ShakerDriver, "shaker")
 
 } // namespace scenePlugin

@@ -13,10 +13,10 @@ using gpic::YY;
 using gpic::ZZ;
 
 // The one line that makes the model selectable as `type viscoElastic;`.
-GPIC_REGISTER(gpic::Material, DampedElastic, "viscoElastic")
+GPIC_REGISTER(gpic::Material<2>, DampedElastic, "viscoElastic")
 
 DampedElastic::DampedElastic(const gpic::Dictionary& dict)
-    : gpic::Material(dict),
+    : gpic::Material<2>(dict),
       E_(dict.getChecked<double>("E", [](const double& v) { return v > 0; }, "E > 0")),
       nu_(dict.getChecked<double>(
           "nu", [](const double& v) { return v > -1.0 && v < 0.5; }, "-1 < nu < 0.5")),
@@ -29,7 +29,7 @@ double DampedElastic::waveSpeed() const
     return std::sqrt((K() + 4.0 * G() / 3.0) / rho());
 }
 
-void DampedElastic::updateStress(gpic::Particles& p, const gpic::ParticleBlock& block,
+void DampedElastic::updateStress(gpic::Particles<2>& p, const gpic::ParticleBlock& block,
                                  double dt) const
 {
     const double G2 = 2.0 * G();
