@@ -26,7 +26,8 @@ add_test(NAME fuzzDictionary
 set_tests_properties(fuzzDictionary PROPERTIES TIMEOUT 600 LABELS integration)
 
 # The ParaView scripts (etc/paraview, each tutorial's paraviewParticles.py) at least compile:
-# ParaView itself cannot be installed beside the build's VTK (README, Output for ParaView).
+# ParaView itself cannot be installed beside the build's VTK (doc/userGuide/output.md,
+# "Output for ParaView").
 file(GLOB PARAVIEW_SCRIPTS ${PROJECT_SOURCE_DIR}/etc/paraview/*.py ${PROJECT_SOURCE_DIR}/tutorials/*/*/paraviewParticles.py)
 add_test(NAME paraviewScripts COMMAND python3 -m py_compile ${PARAVIEW_SCRIPTS})
 set_tests_properties(paraviewScripts PROPERTIES TIMEOUT 60 ENVIRONMENT "PYTHONPYCACHEPREFIX=${CMAKE_CURRENT_BINARY_DIR}/pycache")

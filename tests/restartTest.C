@@ -1,7 +1,8 @@
-// A restart continues exactly as an uninterrupted run (README, "Case layout"): the twoDisks
-// case run straight to t = 2 and the same case stopped at t = 1 and restarted must end with
-// bitwise identical particles, and the restarted run's function-object output must carry on
-// with the same values. The real picInit and picSolver run as processes, as a user runs them.
+// A restart continues exactly as an uninterrupted run (doc/userGuide/caseLayout.md,
+// "Restarts"): the twoDisks case run straight to t = 2 and the same case stopped at t = 1 and
+// restarted must end with bitwise identical particles, and the restarted run's
+// function-object output must carry on with the same values. The real picInit and picSolver
+// run as processes, as a user runs them.
 #include "io/ParticlesVtk.H"
 #include "particles/Particles.H"
 #include "support/Applications.H"

@@ -33,7 +33,7 @@ class Parser(argparse.ArgumentParser):
 def arguments(argv):
     p = Parser(prog='picStudy', description='Design studies of a granular-pic case (system/studyDict).',
                add_help=False, formatter_class=argparse.RawDescriptionHelpFormatter, epilog=__doc__)
-    p.add_argument('-help', action='help', help='show this help and exit')
+    p.add_argument('-help', '--help', '-h', action='help', help='show this help and exit')
     p.add_argument('-case', default='.', help='the base case (default: .)')
     p.add_argument('-output', help="the studies' directory (default: <case>/studies)")
     p.add_argument('-dryRun', action='store_true', help='write and list the cases, run nothing')
