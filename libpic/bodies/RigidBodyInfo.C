@@ -21,11 +21,20 @@ std::vector<RigidBodyInfo<D>> RigidBodyInfo<D>::ofBodies(const Particles<D>& p, 
     for (std::size_t q = 0; q < p.size(); ++q) {
         auto& b = info[p.body[q]];
         const Vector& a = p.halfSize[q];
-        b.inertia += p.m[q] * ((p.x[q] - b.centroid).squaredNorm() + a.squaredNorm() / 3.0);
+        const Vector r = p.x[q] - b.centroid;
+        if constexpr (D == 2) {
+            b.inertia += p.m[q] * (r.squaredNorm() + a.squaredNorm() / 3.0);
+        } else {  // the point's parallel-axis term and its box of half-sizes a about its centre
+            const Vector a2 = a.cwiseProduct(a);
+            const Vector box(a2.y() + a2.z(), a2.x() + a2.z(), a2.x() + a2.y());
+            b.inertia += p.m[q] * ((r.squaredNorm() * Space<3>::Inertia::Identity() - r * r.transpose()).eval() +
+                                   Space<3>::Inertia(box.asDiagonal()) / 3.0);
+        }
     }
     return info;
 }
 
 template class RigidBodyInfo<2>;
+template class RigidBodyInfo<3>;
 
 } // namespace gpic

@@ -58,5 +58,6 @@ std::unique_ptr<ContactPass<D>> ContactPass<D>::New(const Dictionary& dict, cons
 }
 
 template class ContactPass<2>;
+template class ContactPass<3>;
 
 } // namespace gpic

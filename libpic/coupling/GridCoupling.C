@@ -40,5 +40,6 @@ template <int D>
 void GridCoupling<D>::forEachRigidNode(const Grid<D>&, const Drivers&, const std::function<void(int, int)>&) const {}
 
 template class GridCoupling<2>;
+template class GridCoupling<3>;
 
 } // namespace gpic

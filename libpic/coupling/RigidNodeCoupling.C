@@ -57,5 +57,6 @@ void RigidNodeCoupling<D>::update(Grid<D>& grid, const Drivers& rigid, double tN
 }
 
 template class RigidNodeCoupling<2>;
+template class RigidNodeCoupling<3>;
 
 } // namespace gpic

@@ -6,7 +6,7 @@
 
 namespace gpic {
 
-GPIC_REGISTER_DIM(GridCoupling, SingleField, 2, "singleField")
+GPIC_REGISTER_DIMS(GridCoupling, SingleField, "singleField")
 
 template <int D>
 void SingleField<D>::particlesToGrid(EngineView<D>& e, double t)
@@ -96,5 +96,6 @@ void SingleField<D>::remapVelocity(EngineView<D>& e, double tNew, double dt)
 }
 
 template class SingleField<2>;
+template class SingleField<3>;
 
 } // namespace gpic

@@ -5,7 +5,7 @@
 
 namespace gpic {
 
-GPIC_REGISTER_DIM(GridCoupling, SingleFieldRigidBodies, 2, "singleFieldRigidBodies")
+GPIC_REGISTER_DIMS(GridCoupling, SingleFieldRigidBodies, "singleFieldRigidBodies")
 
 template <int D>
 SingleFieldRigidBodies<D>::SingleFieldRigidBodies(CouplingParts<D>& parts) : SingleField<D>(parts)
@@ -33,5 +33,6 @@ void SingleFieldRigidBodies<D>::forEachRigidNode(const Grid<D>& grid, const type
 }
 
 template class SingleFieldRigidBodies<2>;
+template class SingleFieldRigidBodies<3>;
 
 } // namespace gpic

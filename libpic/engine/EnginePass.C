@@ -17,4 +17,5 @@ std::vector<std::unique_ptr<EnginePass<D>>> assemblePasses(PassScene<D>& scene)
 }
 
 template std::vector<std::unique_ptr<EnginePass<2>>> assemblePasses(PassScene<2>&);
+template std::vector<std::unique_ptr<EnginePass<3>>> assemblePasses(PassScene<3>&);
 } // namespace gpic

@@ -3,6 +3,8 @@
 #include "schemes/AffineVelocity.H"
 #include "schemes/XpicFilter.H"
 
+#include <Eigen/LU>
+
 #include "core/error.H"
 #include "core/Threads.H"
 
@@ -636,5 +638,6 @@ std::size_t MpmSolver<D>::removeOutflow()
 }
 
 template class MpmSolver<2>;
+template class MpmSolver<3>;
 
 } // namespace gpic

@@ -39,7 +39,10 @@ void MpmSolver<D>::refreshOpenings()
 }
 
 template void MpmSolver<2>::replaceParticles(Particles<2>);
+template void MpmSolver<3>::replaceParticles(Particles<3>);
 template void MpmSolver<2>::projectToGrid();
+template void MpmSolver<3>::projectToGrid();
 template void MpmSolver<2>::refreshOpenings();
+template void MpmSolver<3>::refreshOpenings();
 
 } // namespace gpic

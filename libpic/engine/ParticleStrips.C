@@ -128,5 +128,6 @@ void ParticleStrips<D>::assign(const Grid<D>& grid, const Particles<D>& p)
 }
 
 template class ParticleStrips<2>;
+template class ParticleStrips<3>;
 
 } // namespace gpic

@@ -55,5 +55,6 @@ void AppliedLoads<D>::renumber(const std::vector<std::size_t>& newIndex, std::si
 }
 
 template class AppliedLoads<2>;
+template class AppliedLoads<3>;
 
 } // namespace gpic

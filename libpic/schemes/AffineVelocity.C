@@ -54,5 +54,6 @@ void AffineVelocity<D>::at(StepPoint, EngineView<D>& e, double dt)
 }
 
 template class AffineVelocity<2>;
+template class AffineVelocity<3>;
 
 } // namespace gpic

@@ -92,5 +92,6 @@ void XpicFilter<D>::at(StepPoint, EngineView<D>& e, double dt)
 }
 
 template class XpicFilter<2>;
+template class XpicFilter<3>;
 
 } // namespace gpic
