@@ -4,6 +4,7 @@
 // 2004), where the bilinear one jumps by 1/h.
 #include "dictionary/Dictionary.H"
 #include "shapeFunctions/ShapeFunction.H"
+#include "support/ShapeChecks.H"
 
 #include <gtest/gtest.h>
 
@@ -37,25 +38,7 @@ TEST_P(ShapeFunctionProperties, partitionOfUnityAndLinearReproduction)
     std::uniform_real_distribution<double> ux(-1 + 0.5, 3 - 0.5), uy(2 + 0.25, 4 - 0.25);
     std::vector<Vector2> xs;
     for (int k = 0; k < 200; ++k) xs.emplace_back(ux(random), uy(random));
-    const ShapeWeights<2> w = weightsAt(GetParam(), grid, xs);
-    for (std::size_t q = 0; q < xs.size(); ++q) {
-        double sumN = 0;
-        Vector2 sumGrad = Vector2::Zero(), reproduced = Vector2::Zero();
-        Eigen::Matrix2d gradX = Eigen::Matrix2d::Zero();
-        for (int a = 0; a < w.stride; ++a) {
-            const std::size_t k = q * w.stride + a;
-            if (w.node[k] < 0) continue;
-            sumN += w.N[k];
-            sumGrad += w.dN[k];
-            reproduced += w.N[k] * grid.nodePosition(w.node[k]);
-            gradX += grid.nodePosition(w.node[k]) * w.dN[k].transpose();
-        }
-        EXPECT_NEAR(sumN, 1.0, 1e-12);
-        EXPECT_NEAR(sumGrad.norm(), 0.0, 1e-10);
-        EXPECT_NEAR((reproduced - xs[q]).norm(), 0.0, 1e-12);
-        // grad of x is the identity: strain of a linear velocity field is exact.
-        EXPECT_NEAR((gradX - Eigen::Matrix2d::Identity()).norm(), 0.0, 1e-10);
-    }
+    expectPartitionOfUnityAndLinearFields<2>(grid, weightsAt(GetParam(), grid, xs), xs);
 }
 
 INSTANTIATE_TEST_SUITE_P(AllShapes, ShapeFunctionProperties, ::testing::Values("bilinear", "uGIMP"));

@@ -488,7 +488,7 @@ void MpmSolver<D>::gridToParticles(double dt)
     // through memory is reloaded after each of them (doc/threading.md).
     const int* node = weights_.node.data();
     const double* Nw = weights_.N.data();
-    const LoopReport report = parallelForChecked(nParticles, [&, node, Nw, stride](long q) {
+    const LoopReport report = parallelForChecked(nParticles, [&, node, Nw, stride](long q) __attribute__((always_inline)) {
         if (driverOf(q)) return LoopMark::none;  // moved below
         Vector vNew = Vector::Zero(), a = Vector::Zero(), vStar = Vector::Zero();
         const std::size_t k0 = q * stride;
@@ -514,7 +514,11 @@ void MpmSolver<D>::gridToParticles(double dt)
         // velocity beyond what its nodes carry (the FLIP null space, e.g. at a wall that stops
         // its nodes) then decays instead of persisting. PIC and APIC: share 0.
         else p.v[q] = flip * (p.v[q] + dt * a) + (1.0 - flip) * vNew;
-        const bool failed = !std::isfinite(p.v[q].sum());
+        // A NaN or an infinity in any component. Summed from scalar reads: a packed read of
+        // the velocity just stored as two halves waits for the stores (a quarter of this pass).
+        double speedSum = p.v[q][0];
+        for (int a = 1; a < D; ++a) speedSum += p.v[q][a];
+        const bool failed = !std::isfinite(speedSum);
         const bool returned = !grid_.contains(p.x[q]) && sides_.keepInsideWalls(grid_, p.x[q], p.v[q]);
         return failed ? LoopMark::failure : (returned ? LoopMark::noted : LoopMark::none);
     });

@@ -98,6 +98,7 @@ template <int D> void Grid<D>::allocate()
     long long count = 1;
     for (int a = 0; a < D; ++a) count *= n_[a] + 1;
     nNodes_ = static_cast<int>(count);
+    for (int a = 0; a < D; ++a) upper_[a] = origin_[a] + n_[a] * h_[a];
     const auto n = static_cast<std::size_t>(nNodes_);
     mass.assign(n, 0.0);
     momentum.assign(n, Vector::Zero());

@@ -69,7 +69,6 @@ template <int D>
 void QuadraticBSplineShape<D>::evaluate(const Grid<D>& grid, const Particles<D>& p, ShapeWeights<D>& w) const
 {
     constexpr int nodes = power(3, D);
-    constexpr NodeOrder<D, 3> order = axisOrder<D, 3>();
     w.resize(p.size(), nodes);
     const Vector h = grid.cellSize();
     const auto n = static_cast<long>(p.size());
@@ -87,7 +86,7 @@ void QuadraticBSplineShape<D>::evaluate(const Grid<D>& grid, const Particles<D>&
             }
         }
         const std::size_t k = q * nodes;
-        writeTensorProduct(grid, axis, order, w.node.data() + k, w.N.data() + k, w.dN.data() + k, &h);
+        writeTensorProduct<D, 3, false>(grid, axis, w.node.data() + k, w.N.data() + k, w.dN.data() + k, &h);
     }
 }
 

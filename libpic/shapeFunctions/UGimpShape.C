@@ -88,7 +88,7 @@ template <int D> void UGimpShape<D>::evaluate(const Grid<D>& grid, const Particl
             }
         }
         const std::size_t k = q * nodes;
-        writeTensorProduct(grid, axis, order, w.node.data() + k, w.N.data() + k, w.dN.data() + k);
+        writeTensorProduct<D, 3, false>(grid, axis, w.node.data() + k, w.N.data() + k, w.dN.data() + k);
         if (rings)  // <N_i / r> = T_i(r) S_i(z): the ring average along the radius only
             for (int l = 0; l < nodes; ++l) {
                 double hoop = T[order[l][0]];
