@@ -149,7 +149,9 @@ TEST(ThreeDMaterials, aRotatedStrainPathGivesTheRotatedStress)
             largest = std::max(largest, S.norm());
         }
         EXPECT_LT(worst, 1e-9 * largest) << dict;
-        if (dict != elastic) EXPECT_GT(straight.p.history("epsPs")[0], 0.0) << dict << ": the path must yield";
+        if (dict != elastic) {
+            EXPECT_GT(straight.p.history("epsPs")[0], 0.0) << dict << ": the path must yield";
+        }
     }
 }
 

@@ -3,8 +3,6 @@
 #include "dictionary/Dictionary.H"
 #include "materials/JaumannRate.H"
 
-#include <cmath>
-
 namespace gpic {
 
 GPIC_REGISTER_DIMS(Material, LinearElastic, "linearElastic")
@@ -17,12 +15,6 @@ LinearElastic<D>::LinearElastic(const Dictionary& dict)
           "nu", [](const double& v) { return v > -1.0 && v < 0.5; }, "-1 < nu < 0.5")),
       elastic_(E_, nu_)
 {}
-
-template <int D> double LinearElastic<D>::waveSpeed() const
-{
-    // P-wave speed sqrt((K + 4G/3)/rho) (seed A4).
-    return std::sqrt((K() + 4.0 * G() / 3.0) / this->rho());
-}
 
 template <int D> void LinearElastic<D>::updateStress(Particles<D>& p, const ParticleBlock& block, double) const
 {

@@ -30,9 +30,7 @@ ElasticConstants::ElasticConstants(const Dictionary& dict) : K_(0), G_(0)
         const double E = dict.getChecked<double>("E", [](const double& v) { return v > 0; }, "E > 0");
         const double nu = dict.getChecked<double>(
             "nu", [](const double& v) { return v > -1.0 && v < 0.5; }, "-1 < nu < 0.5");
-        // Same expressions as linearElastic, so both give the same bits.
-        K_ = E / (3.0 * (1.0 - 2.0 * nu));
-        G_ = E / (2.0 * (1.0 + nu));
+        *this = ElasticConstants(E, nu);
     } else {
         K_ = dict.getChecked<double>("K", [](const double& v) { return v > 0; }, "K > 0");
         G_ = dict.getChecked<double>("G", [](const double& v) { return v > 0; }, "G > 0");

@@ -488,6 +488,8 @@ void MpmSolver<D>::gridToParticles(double dt)
     // through memory is reloaded after each of them (doc/threading.md).
     const int* node = weights_.node.data();
     const double* Nw = weights_.N.data();
+    // Inlined into the threaded loop, as before the engine was a template: GCC then kept the
+    // body as a call per particle.
     const LoopReport report = parallelForChecked(nParticles, [&, node, Nw, stride](long q) __attribute__((always_inline)) {
         if (driverOf(q)) return LoopMark::none;  // moved below
         Vector vNew = Vector::Zero(), a = Vector::Zero(), vStar = Vector::Zero();
