@@ -27,9 +27,9 @@ struct LoadRecord {
     int contactNodes;
 };
 
-class LoadRecorder : public gpic::FunctionObject {
+class LoadRecorder : public gpic::FunctionObject<2> {
 public:
-    LoadRecorder(const gpic::Dictionary& dict, const gpic::RunContext& context) : FunctionObject(dict, context) {}
+    LoadRecorder(const gpic::Dictionary& dict, const gpic::RunContext& context) : FunctionObject<2>(dict, context) {}
     void write(const gpic::MpmSolver<2>& s, double time) override
     {
         records().push_back({time, s.rigidBodyLoads(), s.contactNodes()});
@@ -43,7 +43,7 @@ public:
 
 } // namespace
 
-GPIC_REGISTER(gpic::FunctionObject, LoadRecorder, "testLoadRecorder")
+GPIC_REGISTER(gpic::FunctionObject<2>, LoadRecorder, "testLoadRecorder")
 
 namespace {
 

@@ -56,6 +56,7 @@ foreach(tutorial "verification/elasticBar;bar.png;error.png"
                  "materials/oedometerPoint;oedometer.png"
                  "geotechnics/silo;flowRate.png;flowPattern-0.2.png;error.png"
                  "geotechnics/columnCollapse;deposit.png"
+                 "geotechnics/cylinderCollapse;deposit.png"
                  "studies/bladeDepthFriction;force.png;error.png"
                  "studies/bucketGeometry;studies/bucketGeometry/plots/carried-toothLength.png;studies/bucketGeometry/plots/toothWear-toothAngle.png")
   list(GET tutorial 0 path)

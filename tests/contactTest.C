@@ -268,7 +268,7 @@ TEST(ContactRestart, aRunWithAContactPassRestartsBitwise)
             gpic::RunOptions options;
             options.caseDir = dir.string();
             options.quiet = true;
-            gpic::Simulation restarted(options);
+            gpic::Simulation<2> restarted(options);
             restarted.run();
             const gpic::Particles<2>& p = restarted.solver().particles();
             states.push_back({p.x, p.v, p.sigma});

@@ -86,7 +86,7 @@ TEST(CosseratRun, aRestartContinuesBitwiseAsTheStraightRun)
     RunOptions options;
     options.caseDir = split.string();
     options.quiet = true;
-    Simulation restarted(options);
+    Simulation<2> restarted(options);
     EXPECT_GT(largest(restarted.solver().particles().polar.w), 0.0) << "the restart read the micro-rotation";
     restarted.run();
     expectSame(whole, restarted.solver().particles());

@@ -131,7 +131,7 @@ TEST(Drivers, aRotatingBodyTurnsAboutACentreThatMovesWithIt)
     // With v_c an expression, c(t) is its integral: c_x(t) = 1 + 0.1 (1 - cos 2 pi t) / (2 pi).
     const auto w = driver("type prescribedVelocity; velocity (\"0.1*sin(2*pi*t)\" 0); "
                           "omega table ((0 0) (1 3)); centre (1 0);");
-    const auto* pw = dynamic_cast<const PrescribedVelocityDriver*>(w.get());
+    const auto* pw = dynamic_cast<const PrescribedVelocityDriver<2>*>(w.get());
     ASSERT_NE(pw, nullptr);
     for (double s : {0.01, 0.3, 0.3 + 1e-6, 0.75, 0.2}) {  // forward, a small step, and back again
         const double cx = 1.0 + 0.1 * (1.0 - std::cos(2 * pi * s)) / (2 * pi);
@@ -185,7 +185,7 @@ TEST(Drivers, badDriverInputNamesTheKeyword)
 TEST(Drivers, aTargetForceStopsTheBodyWhenTheMaterialPushesBackHardEnough)
 {
     auto d = driver("type prescribedVelocity; velocity (0 -0.01); targetForce (0 100);");
-    const auto* p = dynamic_cast<const PrescribedVelocityDriver*>(d.get());
+    const auto* p = dynamic_cast<const PrescribedVelocityDriver<2>*>(d.get());
     d->attach(RigidBodyInfo<2>{1.0, Vector2::Zero(), 0.0, Vector2(0, -0.01), Vector2::Zero()});
     RigidBodyLoad<2> load;
     load.force = Vector2(500, 99.9);  // large, but not along the target

@@ -82,7 +82,7 @@ Drop dropLoosePoint(const std::string& extra)
     options.caseDir = dir.string();
     options.quiet = true;
     try {
-        Simulation(options).run();
+        Simulation<2>(options).run();
         d.finished = true;
     } catch (const std::exception& e) {
         std::cout << "drop stopped: " << e.what() << "\n";

@@ -33,7 +33,7 @@ Settled settle(const std::string& massScaling, double endTime)
     gpic::RunOptions options;
     options.caseDir = dir.string();
     options.quiet = true;
-    gpic::Simulation simulation(options);
+    gpic::Simulation<2> simulation(options);
     Settled r{0, simulation.run(), 1};
     const auto& scales = simulation.solver().massScales();
     if (!scales.empty()) r.massScale = scales[0];
@@ -51,7 +51,7 @@ std::string exact(double v)
 }
 
 //- The engine of the column case, built but not run.
-std::unique_ptr<gpic::Simulation> columnEngine(const fs::path& dir, const std::string& massScaling)
+std::unique_ptr<gpic::Simulation<2>> columnEngine(const fs::path& dir, const std::string& massScaling)
 {
     writeColumn(dir, massScaling, 0.01);
     return initialisedSimulation(dir);

@@ -202,7 +202,7 @@ TEST(Output, aCopiedAndRenamedCaseGoesOnWithTheIndexItCameWith)
         gpic::RunOptions options;
         options.caseDir = copy.string();
         options.quiet = true;
-        gpic::Simulation restarted(options);  // from 0.2, the latest time
+        gpic::Simulation<2> restarted(options);  // from 0.2, the latest time
         restarted.run();
     }
     EXPECT_FALSE(fs::exists(copy / "siloRenamed.pvd"));

@@ -107,7 +107,7 @@ void compareThroughTheDiskImpact(double flipFraction)
     setEntry(dir / "system/mpmSchemes", "shapeFunction", "bilinear");
     if (flipFraction < 1) setEntry(dir / "system/mpmSchemes", "flipFraction", std::to_string(flipFraction));
     const auto simulationPtr = initialisedSimulation(dir);
-    gpic::Simulation& simulation = *simulationPtr;
+    gpic::Simulation<2>& simulation = *simulationPtr;
 
     // The reference starts from the same particles.
     const gpic::Particles<2>& p0 = simulation.solver().particles();

@@ -13,10 +13,10 @@ using namespace gpic;
 
 namespace {
 
-std::unique_ptr<Shape> shape(const std::string& text)
+std::unique_ptr<Shape<2>> shape(const std::string& text)
 {
     const Dictionary d = Dictionary::parse("shape { " + text + " }", "constant/bodies");
-    return Shape::New(d.subDict("shape"));
+    return Shape<2>::New(d.subDict("shape"));
 }
 
 std::string refusal(const std::string& text)

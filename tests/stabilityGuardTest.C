@@ -153,7 +153,7 @@ Diagnosis parse(const std::string& line)
 }
 
 //- Run the scene in-process; the diagnosis when the run stops (line empty when it finishes).
-Diagnosis runScene(const fs::path& dir, std::unique_ptr<Simulation>* keep = nullptr)
+Diagnosis runScene(const fs::path& dir, std::unique_ptr<Simulation<2>>* keep = nullptr)
 {
     auto sim = initialisedSimulation(dir);
     try {
@@ -236,7 +236,7 @@ void runBlock(double E, double v0, const std::string& scheme, bool strict, int& 
     const double M = rho * L * 0.2, A = c / 1000, E0 = M * A * A / 4;
 
     if (travel < gap) {
-        std::unique_ptr<Simulation> sim;
+        std::unique_ptr<Simulation<2>> sim;
         const Diagnosis d = runScene(dir, &sim);
         if (!d.line.empty() && !strict) {
             EXPECT_EQ(d.what.find("outside the grid"), std::string::npos) << d.line;
@@ -392,7 +392,7 @@ TEST(StabilityGuard, anUnstableAutomaticStepStopsOnCreatedEnergyBeforeAnyNaN)
         Scene s;
         s.E = 1e9;
         writeScene(dir, s);
-        std::unique_ptr<Simulation> sim;
+        std::unique_ptr<Simulation<2>> sim;
         const Diagnosis d = runScene(dir, &sim);
         ASSERT_TRUE(d.line.empty()) << d.line;
         EXPECT_LT(sim->guard().largestEnergyGain(), 0.15);  // measured 0.094

@@ -268,7 +268,7 @@ TEST(Stages, excavationLeavesTheStressOfTheNewHeight)
     const auto [e22, e11] = stressErrors(p, H, 0.1);
     EXPECT_LT(e22, 0.02);
     EXPECT_LT(e11, 0.02);
-    EXPECT_LE(gpic::EndCondition::maxSpeed(simulation->solver()), 1e-5);
+    EXPECT_LE(gpic::EndCondition<2>::maxSpeed(simulation->solver()), 1e-5);
 }
 
 namespace {
@@ -315,7 +315,7 @@ TEST(Stages, aClosedGateHoldsTheBlockAndTheOpenedGateLetsItOut)
     gpic::RunOptions options;
     options.caseDir = dir.string();
     options.quiet = true;
-    gpic::Simulation open(options);
+    gpic::Simulation<2> open(options);
     open.run();
     EXPECT_NEAR(open.time(), 0.5, 1e-12);
     EXPECT_GT(open.solver().removedMass(), 0.5 * 1600 * 0.12) << "most of the block fell out";
@@ -389,7 +389,7 @@ TEST(Stages, aRestartInsideAFillEndsBitwiseAsTheStraightRun)
     gpic::RunOptions options;
     options.caseDir = split.string();
     options.quiet = true;
-    gpic::Simulation restarted(options);
+    gpic::Simulation<2> restarted(options);
     restarted.run();
 
     const auto times = gpic::listTimeDirectories(straight.string());
@@ -420,7 +420,7 @@ gpic::InputError inputErrorOf(const fs::path& dir)
     options.caseDir = dir.string();
     options.quiet = true;
     try {
-        gpic::Simulation s(options);
+        gpic::Simulation<2> s(options);
     } catch (const gpic::InputError& e) {
         return e;
     }

@@ -83,7 +83,7 @@ Spin spinDisk(const std::string& transfer, const std::string& shape, int steps =
     RunOptions options;
     options.caseDir = dir.string();
     options.quiet = true;
-    Simulation(options).run();
+    Simulation<2>(options).run();
 
     const Grid<2> grid(Dictionary::readFile((dir / "constant/grid").string()));
     const auto shapeFunction = Registry<ShapeFunction<2>>::select(shape, Dictionary{}, Dictionary{});
@@ -269,7 +269,7 @@ TEST(Transfer, apicRestartsBitwiseInsideTheFillAndThePush)
         RunOptions options;
         options.caseDir = split.string();
         options.quiet = true;
-        Simulation(options).run();
+        Simulation<2>(options).run();
         int compared = 0;
         for (std::size_t later = k + 1; later < times.size(); ++later) {
             const std::string& name = times[later].second;

@@ -2,6 +2,6 @@
 
 namespace gpic {
 
-GPIC_REGISTER(RigidBodyDriver<2>, FixedDriver, "fixed")
+GPIC_REGISTER_DIMS(RigidBodyDriver, FixedDriver, "fixed")
 
 } // namespace gpic

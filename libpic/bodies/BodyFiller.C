@@ -4,13 +4,14 @@
 #include "dictionary/Dictionary.H"
 
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace gpic {
 
 namespace {
 
-int materialIndex(const Dictionary& body, const std::vector<std::unique_ptr<Material<2>>>& materials)
+template <int D> int materialIndex(const Dictionary& body, const std::vector<std::unique_ptr<Material<D>>>& materials)
 {
     const std::string name = body.get<std::string>("material");
     std::string valid;
@@ -22,8 +23,12 @@ int materialIndex(const Dictionary& body, const std::vector<std::unique_ptr<Mate
                               valid);
 }
 
-//- Initial stress at x (eqs. 3.3.1-3.3.4), tension positive.
-class InitialStress {
+//- Initial stress at x (eqs. 3.3.1-3.3.4), tension positive; the vertical is the last axis
+//  (x2 in the plane, x3 in 3D).
+template <int D> class InitialStress {
+    using Vector = typename Space<D>::Vector;
+    using SymTensor = typename Space<D>::SymTensor;
+
 public:
     InitialStress(const Dictionary* dict, double rho, double g, double topOfBody)
     {
@@ -31,9 +36,9 @@ public:
         type_ = dict->getWord("type", {"uniform", "geostatic"});
         if (type_ == "uniform") {
             const auto s = dict->getChecked<std::vector<double>>(
-                "sigma", [](const std::vector<double>& v) { return v.size() == 4; },
-                "four components (s11 s22 s33 s12)");
-            uniform_ = SymTensor(s[0], s[1], s[2], s[3]);
+                "sigma", [](const std::vector<double>& v) { return v.size() == Space<D>::nSym; },
+                D == 2 ? "four components (s11 s22 s33 s12)" : "six components (s11 s22 s33 s12 s23 s13)");
+            for (int k = 0; k < Space<D>::nSym; ++k) uniform_[k] = s[static_cast<std::size_t>(k)];
             return;
         }
         // K0 given (eq. 3.3.1; nu/(1-nu) for an elastic mass, eq. 3.3.2) or from the
@@ -51,11 +56,14 @@ public:
         surface_ = dict->getOrDefault<double>("surface", topOfBody);
         rhoG_ = rho * g;
     }
-    SymTensor at(const Vector2& x) const
+    SymTensor at(const Vector& x) const
     {
         if (type_ != "geostatic") return uniform_;
-        const double s22 = -rhoG_ * std::max(0.0, surface_ - x.y());  // eq. 3.3.1
-        return SymTensor(K0_ * s22, s22, K0_ * s22, 0.0);               // eq. 3.3.2
+        const double sV = -rhoG_ * std::max(0.0, surface_ - x[D - 1]);  // eq. 3.3.1
+        SymTensor s = SymTensor::Zero();                                 // eq. 3.3.2
+        for (int a = 0; a < 3; ++a) s[a] = K0_ * sV;
+        s[D - 1] = sV;
+        return s;
     }
 
 private:
@@ -66,24 +74,33 @@ private:
 
 } // namespace
 
-FilledBodies fillBodies(const Dictionary& bodiesDict, const Grid<2>& grid,
-                        const std::vector<std::unique_ptr<Material<2>>>& materials,
-                        const Vector2& gravity)
+template <int D>
+FilledBodies<D> fillBodies(const Dictionary& bodiesDict, const Grid<D>& grid,
+                           const std::vector<std::unique_ptr<Material<D>>>& materials,
+                           const typename Space<D>::Vector& gravity,
+                           const std::array<bool, Space<D>::nFaces>& mirrorSides)
 {
-    FilledBodies out;
-    std::vector<std::unique_ptr<Shape>> shapes;  //- of the bodies filled so far
+    using Vector = typename Space<D>::Vector;
+    FilledBodies<D> out;
+    std::vector<std::unique_ptr<Shape<D>>> shapes;  //- of the bodies filled so far
     for (const auto& key : bodiesDict.keys()) {
         if (!bodiesDict.isDict(key)) bodiesDict.fail(key, "'" + key + "' is not a body sub-dictionary");
         const Dictionary& body = bodiesDict.subDict(key);
         const int bodyId = static_cast<int>(out.bodyNames.size());
         out.bodyNames.push_back(key);
         const int mat = materialIndex(body, materials);
-        auto shape = Shape::New(body.subDict("shape"));
+        auto shape = Shape<D>::New(body.subDict("shape"));
         const auto [lo, hi] = shape->bounds();
         // A millionth of a cell of slack: a cell size written with a few decimals (1.8/135 as
         // 0.0133333333) leaves the grid a rounding short of the shape it was sized for.
         const double slack = 1e-6 * grid.minCellSize();
-        const Vector2 gridLo = grid.origin().array() - slack, gridHi = grid.upper().array() + slack;
+        Vector gridLo = grid.origin().array() - slack, gridHi = grid.upper().array() + slack;
+        // A shape may reach across a mirror side (symmetry): the part beyond it is the mirrored
+        // half of the body, not filled (a quarter of a column between two symmetry planes).
+        for (int a = 0; a < D; ++a) {
+            if (mirrorSides[2 * a]) gridLo[a] = -std::numeric_limits<double>::infinity();
+            if (mirrorSides[2 * a + 1]) gridHi[a] = std::numeric_limits<double>::infinity();
+        }
         if ((lo.array() < gridLo.array()).any() || (hi.array() > gridHi.array()).any()) {
             std::ostringstream msg;
             msg << "body '" << key << "' reaches outside the grid: its shape spans ("
@@ -93,33 +110,48 @@ FilledBodies fillBodies(const Dictionary& bodiesDict, const Grid<2>& grid,
         }
         const int n = body.getChecked<int>("particlesPerCell", [](const int& k) { return k >= 1 && k <= 10; },
                                            "1 <= particlesPerCell <= 10");
-        const Vector2 v0 = body.getOrDefault<Vector2>("velocity", Vector2::Zero());
-        Vector2 amplitude = Vector2::Zero(), wavenumber = Vector2::Zero();
+        const Vector v0 = body.getOrDefault<Vector>("velocity", Vector::Zero());
+        Vector amplitude = Vector::Zero(), wavenumber = Vector::Zero();
         if (const Dictionary* mode = body.subDictPtr("modeShape")) {
-            amplitude = mode->get<Vector2>("amplitude");
-            wavenumber = mode->get<Vector2>("wavenumber");
+            amplitude = mode->get<Vector>("amplitude");
+            wavenumber = mode->get<Vector>("wavenumber");
         }
-        const InitialStress stress(body.subDictPtr("initialStress"), materials[mat]->rho(),
-                                   gravity.norm(), hi.y());
-        const Vector2 h = grid.cellSize();
-        const double volume = h.x() * h.y() / (n * n);
-        const Vector2 half(0.5 * h.x() / n, 0.5 * h.y() / n);
+        const InitialStress<D> stress(body.subDictPtr("initialStress"), materials[mat]->rho(),
+                                      gravity.norm(), hi[D - 1]);
+        const Vector h = grid.cellSize();
+        double volume = h.x() * h.y() / (n * n);
+        if constexpr (D == 3) volume = h.x() * h.y() * h.z() / (n * n * n);
+        const Vector half = 0.5 * h / n;
         std::size_t added = 0;
-        for (int j = 0; j < grid.ny(); ++j)
-            for (int i = 0; i < grid.nx(); ++i)
-                for (int b = 0; b < n; ++b)
-                    for (int a = 0; a < n; ++a) {
-                        const Vector2 x = grid.nodePosition(i, j) +
-                                          Vector2((a + 0.5) * h.x() / n, (b + 0.5) * h.y() / n);
-                        if (!shape->inside(x)) continue;
-                        // Axisymmetric: the ring the particle stands for, per radian (A r).
-                        const double V = grid.axisymmetric() ? volume * x.x() : volume;
-                        const std::size_t q = out.particles.add(x, materials[mat]->rho() * V, V, half, bodyId, mat);
-                        const double phase = wavenumber.dot(x - grid.origin());
-                        out.particles.v[q] = v0 + amplitude * std::sin(phase);
-                        out.particles.sigma[q] = stress.at(x);
-                        ++added;
-                    }
+        const auto place = [&](const Vector& x) {
+            if (!shape->inside(x)) return;
+            // Axisymmetric: the ring the particle stands for, per radian (A r).
+            const double V = grid.axisymmetric() ? volume * x.x() : volume;
+            const std::size_t q = out.particles.add(x, materials[mat]->rho() * V, V, half, bodyId, mat);
+            const double phase = wavenumber.dot(x - grid.origin());
+            out.particles.v[q] = v0 + amplitude * std::sin(phase);
+            out.particles.sigma[q] = stress.at(x);
+            ++added;
+        };
+        // n^D particles per cell at the sub-cell centres, cell by cell in node order.
+        const auto subCentre = [&](const typename Grid<D>::Index& cell, const typename Grid<D>::Index& sub) {
+            Vector x = grid.nodePosition(cell);
+            for (int d = 0; d < D; ++d) x[d] += (sub[d] + 0.5) * h[d] / n;
+            return x;
+        };
+        if constexpr (D == 2) {
+            for (int j = 0; j < grid.ny(); ++j)
+                for (int i = 0; i < grid.nx(); ++i)
+                    for (int b = 0; b < n; ++b)
+                        for (int a = 0; a < n; ++a) place(subCentre({i, j}, {a, b}));
+        } else {
+            for (int k = 0; k < grid.cells(2); ++k)
+                for (int j = 0; j < grid.cells(1); ++j)
+                    for (int i = 0; i < grid.cells(0); ++i)
+                        for (int c = 0; c < n; ++c)
+                            for (int b = 0; b < n; ++b)
+                                for (int a = 0; a < n; ++a) place(subCentre({i, j, k}, {a, b, c}));
+        }
         if (added == 0) body.fail("shape", "body '" + key + "' holds no particle: enlarge it or "
                                            "raise particlesPerCell");
         // Two bodies in the same place would put twice the mass there and start interpenetrated.
@@ -140,5 +172,10 @@ FilledBodies fillBodies(const Dictionary& bodiesDict, const Grid<2>& grid,
     if (out.bodyNames.empty()) bodiesDict.fail("", "constant/bodies defines no body");
     return out;
 }
+
+template FilledBodies<2> fillBodies(const Dictionary&, const Grid<2>&, const std::vector<std::unique_ptr<Material<2>>>&,
+                                    const Space<2>::Vector&, const std::array<bool, Space<2>::nFaces>&);
+template FilledBodies<3> fillBodies(const Dictionary&, const Grid<3>&, const std::vector<std::unique_ptr<Material<3>>>&,
+                                    const Space<3>::Vector&, const std::array<bool, Space<3>::nFaces>&);
 
 } // namespace gpic

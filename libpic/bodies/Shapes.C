@@ -1,5 +1,5 @@
 // The built-in shapes: small enough to share one file.
-#include "bodies/Shape.H"
+#include "bodies/PolygonShape.H"
 
 #include "dictionary/Dictionary.H"
 
@@ -9,7 +9,7 @@
 
 namespace gpic {
 
-class RectangleShape : public Shape {
+class RectangleShape : public Shape<2> {
 public:
     explicit RectangleShape(const Dictionary& d) : min_(d.get<Vector2>("min")), max_(d.get<Vector2>("max"))
     {
@@ -25,7 +25,7 @@ private:
     Vector2 min_, max_;
 };
 
-class CircleShape : public Shape {
+class CircleShape : public Shape<2> {
 public:
     explicit CircleShape(const Dictionary& d)
         : centre_(d.get<Vector2>("centre")),
@@ -44,7 +44,7 @@ private:
 
 //- The ring between two radii, or a sector of it (angles in degrees from the x1 axis,
 //  counter-clockwise from startAngle to endAngle): a pipe, a dome, a thick sphere's section.
-class AnnulusShape : public Shape {
+class AnnulusShape : public Shape<2> {
 public:
     explicit AnnulusShape(const Dictionary& d)
         : centre_(d.get<Vector2>("centre")),
@@ -103,66 +103,9 @@ private:
     }
 };
 
-class PolygonShape : public Shape {
-public:
-    explicit PolygonShape(const Dictionary& d) : points_(d.get<std::vector<Vector2>>("points"))
-    {
-        if (points_.size() < 3) d.fail("points", "a polygon needs at least 3 points");
-        checkSimple(d);
-    }
-    //- Even-odd ray crossing test.
-    bool inside(const Vector2& x) const override
-    {
-        bool in = false;
-        for (std::size_t i = 0, j = points_.size() - 1; i < points_.size(); j = i++) {
-            const Vector2 &a = points_[i], &b = points_[j];
-            if ((a.y() > x.y()) != (b.y() > x.y()) &&
-                x.x() < (b.x() - a.x()) * (x.y() - a.y()) / (b.y() - a.y()) + a.x())
-                in = !in;
-        }
-        return in;
-    }
-    std::pair<Vector2, Vector2> bounds() const override
-    {
-        Vector2 lo = points_[0], hi = points_[0];
-        for (const auto& p : points_) {
-            lo = lo.cwiseMin(p);
-            hi = hi.cwiseMax(p);
-        }
-        return {lo, hi};
-    }
-
-private:
-    std::vector<Vector2> points_;
-
-    //- A self-intersecting outline (a bow-tie) has no inside the user meant: the even-odd
-    //  test fills only part of it. Two edges that are not neighbours may touch (a thin wall
-    //  closing on itself) but not cross.
-    void checkSimple(const Dictionary& d) const
-    {
-        const std::size_t n = points_.size();
-        const auto [lo, hi] = bounds();
-        const double zero = 1e-12 * (hi - lo).squaredNorm();  // orientation round-off
-        const auto side = [&](const Vector2& a, const Vector2& b, const Vector2& c) {
-            const double o = (b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x());
-            return o > zero ? 1 : o < -zero ? -1 : 0;
-        };
-        for (std::size_t i = 0; i < n; ++i)
-            for (std::size_t j = i + 2; j < n; ++j) {
-                if (i == 0 && j == n - 1) continue;  // neighbours through the closing edge
-                const Vector2 &a = points_[i], &b = points_[(i + 1) % n], &c = points_[j], &e = points_[(j + 1) % n];
-                if (side(a, b, c) * side(a, b, e) < 0 && side(c, e, a) * side(c, e, b) < 0)
-                    d.fail("points", "keyword 'points' in dictionary " + d.name() + ": the polygon's edges " +
-                                         std::to_string(i + 1) + " and " + std::to_string(j + 1) +
-                                         " cross (a self-intersecting outline has no inside): list the corners "
-                                         "in order around the shape");
-            }
-    }
-};
-
-GPIC_REGISTER(Shape, RectangleShape, "rectangle")
-GPIC_REGISTER(Shape, CircleShape, "circle")
-GPIC_REGISTER(Shape, PolygonShape, "polygon")
-GPIC_REGISTER(Shape, AnnulusShape, "annulus")
+GPIC_REGISTER(Shape<2>, RectangleShape, "rectangle")
+GPIC_REGISTER(Shape<2>, CircleShape, "circle")
+GPIC_REGISTER(Shape<2>, PolygonShape, "polygon")
+GPIC_REGISTER(Shape<2>, AnnulusShape, "annulus")
 
 } // namespace gpic

@@ -99,25 +99,34 @@ TimeFunction TimeFunction::read(const Dictionary& dict, const std::string& keywo
                            writeTokens(e.tokens) + "'");
 }
 
-std::array<TimeFunction, 2> TimeFunction::readVector(const Dictionary& dict, const std::string& keyword)
+template <int D> std::array<TimeFunction, D> TimeFunction::readVector(const Dictionary& dict, const std::string& keyword)
 {
     const Entry& e = entryOf(dict, keyword);
+    const char* const form = D == 2 ? "(x y)" : "(x y z)";
     if (isTable(e.tokens)) {
-        const auto rows = readTable(dict, keyword, e.tokens, 3, "(t x y)");
-        return {column(rows, 1), column(rows, 2)};
+        const auto rows = readTable(dict, keyword, e.tokens, D + 1, D == 2 ? "(t x y)" : "(t x y z)");
+        std::array<TimeFunction, D> f;
+        for (int a = 0; a < D; ++a) f[a] = column(rows, a + 1);
+        return f;
     }
-    // (x y) with each component a number or an "expression of t".
+    // (x y [z]) with each component a number or an "expression of t".
     const auto& t = e.tokens;
-    std::array<TimeFunction, 2> f;
-    const bool ok = t.size() == 4 && isPunct(t[0], '(') && isPunct(t[3], ')') &&
-                    readComponent(t[1], f[0]) && readComponent(t[2], f[1]);
+    std::array<TimeFunction, D> f;
+    bool ok = t.size() == static_cast<std::size_t>(D + 2) && isPunct(t[0], '(') && isPunct(t[D + 1], ')');
+    for (int a = 0; ok && a < D; ++a) ok = readComponent(t[a + 1], f[a]);
     if (ok) return f;
-    Vector2 constant;  // also accepts (x y 0) and unit brackets
-    if (convertTokens(t, constant).empty()) return {TimeFunction(constant.x()), TimeFunction(constant.y())};
-    dict.fail(keyword, "keyword '" + keyword + "' in dictionary " + dict.name() +
-                           ": expected (x y) with numbers or \"expressions of t\", or table ((t x y) ...), found '" +
-                           writeTokens(t) + "'");
+    typename Space<D>::Vector constant;  // also accepts (x y 0) in the plane, and unit brackets
+    if (convertTokens(t, constant).empty()) {
+        for (int a = 0; a < D; ++a) f[a] = TimeFunction(constant[a]);
+        return f;
+    }
+    dict.fail(keyword, "keyword '" + keyword + "' in dictionary " + dict.name() + ": expected " + form +
+                           " with numbers or \"expressions of t\", or table ((t " + std::string(form + 1) +
+                           " ...), found '" + writeTokens(t) + "'");
 }
+
+template std::array<TimeFunction, 2> TimeFunction::readVector<2>(const Dictionary&, const std::string&);
+template std::array<TimeFunction, 3> TimeFunction::readVector<3>(const Dictionary&, const std::string&);
 
 double TimeFunction::value(double t) const
 {
@@ -187,13 +196,6 @@ double TimeFunction::adaptiveSimpson(double a, double b, double fa, double fm, d
         return left + right + delta / 15.0;
     return adaptiveSimpson(a, m, fa, flm, fm, left, 0.5 * tolerance, depth + 1) +
            adaptiveSimpson(m, b, fm, frm, fb, right, 0.5 * tolerance, depth + 1);
-}
-
-Vector2 valueOf(const std::array<TimeFunction, 2>& f, double t) { return {f[0].value(t), f[1].value(t)}; }
-
-Vector2 integralOf(const std::array<TimeFunction, 2>& f, double t0, double t1)
-{
-    return {f[0].integral(t0, t1), f[1].integral(t0, t1)};
 }
 
 } // namespace gpic

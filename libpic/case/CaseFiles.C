@@ -13,32 +13,34 @@ Dictionary readCaseFile(const std::string& caseDir, const std::string& relativeP
                                 relativePath);
 }
 
-std::vector<std::unique_ptr<Material<2>>> readMaterials(const Dictionary& materialsDict)
+template <int D> std::vector<std::unique_ptr<Material<D>>> readMaterials(const Dictionary& materialsDict)
 {
-    std::vector<std::unique_ptr<Material<2>>> materials;
+    std::vector<std::unique_ptr<Material<D>>> materials;
     for (const auto& key : materialsDict.keys()) {
         if (!materialsDict.isDict(key))
             materialsDict.fail(key, "'" + key + "' is not a material sub-dictionary");
-        materials.push_back(Material<2>::New(materialsDict.subDict(key)));
+        materials.push_back(Material<D>::New(materialsDict.subDict(key)));
     }
     if (materials.empty()) materialsDict.fail("", "no material is defined");
     return materials;
 }
 
-std::array<std::unique_ptr<BoundaryCondition<2>>, PlaneSpace::nFaces> readBoundaries(const Dictionary& gridDict)
+template <int D>
+std::array<std::unique_ptr<BoundaryCondition<D>>, Space<D>::nFaces> readBoundaries(const Dictionary& gridDict)
 {
     const Dictionary& sides = gridDict.subDict("boundaries");
     // The axis of an axisymmetric scene (the left side at r = 0): u_r = 0 there, a mirror.
     const bool leftIsAxis =
+        D == 2 &&
         gridDict.getWordOrDefault("geometry", {"planeStrain", "axisymmetric"}, "planeStrain") == "axisymmetric" &&
-        gridDict.get<Vector2>("origin").x() == 0.0;
+        gridDict.get<typename Space<D>::Vector>("origin").x() == 0.0;
     const Dictionary axis = Dictionary::parse("type symmetry;", sides.name() + "/left");
-    std::array<std::unique_ptr<BoundaryCondition<2>>, PlaneSpace::nFaces> bcs;
-    for (int s = 0; s < 4; ++s) {
+    std::array<std::unique_ptr<BoundaryCondition<D>>, Space<D>::nFaces> bcs;
+    for (int s = 0; s < Space<D>::nFaces; ++s) {
         const std::string& side = gridSideNames()[s];
         if (s == static_cast<int>(GridSide::left) && leftIsAxis) {
             if (!sides.found(side)) {
-                bcs[s] = Registry<BoundaryCondition<2>>::select(axis, axis, GridSide::left);
+                bcs[s] = Registry<BoundaryCondition<D>>::select(axis, axis, GridSide::left);
                 continue;
             }
             const std::string type = sides.subDict(side).get<std::string>("type");
@@ -47,8 +49,8 @@ std::array<std::unique_ptr<BoundaryCondition<2>>, PlaneSpace::nFaces> readBounda
                                                  "u_r = 0, not '" + type + "'; valid choices: symmetry (the default), "
                                                  "slip, fixed");
         }
-        bcs[s] = Registry<BoundaryCondition<2>>::select(sides.subDict(side), sides.subDict(side),
-                                                     static_cast<GridSide>(s));
+        bcs[s] = Registry<BoundaryCondition<D>>::select(sides.subDict(side), sides.subDict(side),
+                                                        static_cast<GridSide>(s));
     }
     return bcs;
 }
@@ -60,10 +62,11 @@ std::array<bool, PlaneSpace::nFaces> mirrorSides(const std::array<std::unique_pt
     return mirror;
 }
 
-std::vector<std::unique_ptr<RigidBodyDriver<2>>> readRigidBodies(const Dictionary& dict,
-                                                              const std::vector<std::string>& bodyNames)
+template <int D>
+std::vector<std::unique_ptr<RigidBodyDriver<D>>> readRigidBodies(const Dictionary& dict,
+                                                                 const std::vector<std::string>& bodyNames)
 {
-    std::vector<std::unique_ptr<RigidBodyDriver<2>>> drivers(bodyNames.size());
+    std::vector<std::unique_ptr<RigidBodyDriver<D>>> drivers(bodyNames.size());
     for (const auto& key : dict.keys()) {
         const auto it = std::find(bodyNames.begin(), bodyNames.end(), key);
         if (it == bodyNames.end()) {
@@ -72,29 +75,30 @@ std::vector<std::unique_ptr<RigidBodyDriver<2>>> readRigidBodies(const Dictionar
             dict.fail(key, "'" + key + "' is not a body of the particles; valid choices: " + valid);
         }
         if (!dict.isDict(key)) dict.fail(key, "'" + key + "' needs a driver sub-dictionary { type ...; }");
-        drivers[static_cast<std::size_t>(it - bodyNames.begin())] = RigidBodyDriver<2>::New(dict.subDict(key));
+        drivers[static_cast<std::size_t>(it - bodyNames.begin())] = RigidBodyDriver<D>::New(dict.subDict(key));
     }
     dict.warnUnused();
     return drivers;
 }
 
-std::vector<std::unique_ptr<ParticleLoad<2>>> readLoads(const Dictionary& dict)
+template <int D> std::vector<std::unique_ptr<ParticleLoad<D>>> readLoads(const Dictionary& dict)
 {
-    std::vector<std::unique_ptr<ParticleLoad<2>>> loads;
+    std::vector<std::unique_ptr<ParticleLoad<D>>> loads;
     for (const auto& key : dict.keys()) {
         if (!dict.isDict(key)) dict.fail(key, "'" + key + "' needs a load sub-dictionary { type ...; }");
-        loads.push_back(ParticleLoad<2>::New(dict.subDict(key)));
+        loads.push_back(ParticleLoad<D>::New(dict.subDict(key)));
     }
     dict.warnUnused();
     return loads;
 }
 
-Vector2 readGravity(const std::string& caseDir)
+template <int D> typename Space<D>::Vector readGravity(const std::string& caseDir)
 {
+    using Vector = typename Space<D>::Vector;
     if (!std::filesystem::exists(std::filesystem::path(caseDir) / "constant/g"))
-        return Vector2::Zero();
+        return Vector::Zero();
     const Dictionary g = readCaseFile(caseDir, "constant/g");
-    const Vector2 value = g.get<Vector2>("value");
+    const Vector value = g.get<Vector>("value");
     g.warnUnused();
     return value;
 }
@@ -135,7 +139,7 @@ std::string pvdPath(const std::string& caseDir)
     return own.string();
 }
 
-std::vector<std::string> materialNames(const std::vector<std::unique_ptr<Material<2>>>& materials)
+template <int D> std::vector<std::string> materialNames(const std::vector<std::unique_ptr<Material<D>>>& materials)
 {
     std::vector<std::string> names;
     for (const auto& m : materials) names.push_back(m->name());
@@ -163,5 +167,31 @@ std::vector<char> readRigidRotation(const Dictionary& rigidBodies, const std::ve
                        "fixed";
     return fixed;
 }
+
+int caseDimension(const Dictionary& gridDict)
+{
+    const Entry* n = gridDict.findEntry("nCells");
+    const bool threeCounts = n && n->tokens.size() == 5;  // ( nx ny nz )
+    if (!gridDict.found("geometry")) return threeCounts ? 3 : 2;
+    const std::string geometry = gridDict.getWord("geometry", {"planeStrain", "axisymmetric", "threeD"});
+    if (geometry == "threeD") return 3;
+    if (threeCounts)
+        gridDict.fail("geometry", "keyword 'geometry' in dictionary " + gridDict.name() + ": geometry " + geometry +
+                                      " is a plane scene (nCells (nx ny)), but nCells has three counts; a 3D grid is "
+                                      "geometry threeD (the default with three counts)");
+    return 2;
+}
+
+#define GPIC_CASE_FILES(D)                                                                                     \
+    template std::vector<std::unique_ptr<Material<D>>> readMaterials<D>(const Dictionary&);                    \
+    template std::array<std::unique_ptr<BoundaryCondition<D>>, Space<D>::nFaces> readBoundaries<D>(const Dictionary&); \
+    template std::vector<std::unique_ptr<RigidBodyDriver<D>>> readRigidBodies<D>(const Dictionary&,             \
+                                                                                 const std::vector<std::string>&); \
+    template std::vector<std::unique_ptr<ParticleLoad<D>>> readLoads<D>(const Dictionary&);                    \
+    template Space<D>::Vector readGravity<D>(const std::string&);                                              \
+    template std::vector<std::string> materialNames<D>(const std::vector<std::unique_ptr<Material<D>>>&);
+GPIC_CASE_FILES(2)
+GPIC_CASE_FILES(3)
+#undef GPIC_CASE_FILES
 
 } // namespace gpic

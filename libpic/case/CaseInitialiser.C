@@ -10,25 +10,28 @@
 
 namespace gpic {
 
-InitialiseSummary initialiseCase(const std::string& dir, bool overwrite)
+namespace {
+
+template <int D>
+InitialiseSummary initialise(const std::string& dir, bool overwrite, const Dictionary& control, Dictionary gridDict)
 {
-    const Dictionary control = readCaseFile(dir, "system/controlDict");
-    Plugins::open(control, "libs");
     const double t0 = control.getOrDefault<double>("startTime", 0.0);
     const std::string start = timeName(t0);
-    const Dictionary gridDict = readCaseFile(dir, "constant/grid");
-    const Grid<2> grid(gridDict);
+    const Grid<D> grid(gridDict);
     // Only checked here: a bad side type fails now, not in picSolver.
-    const auto boundaries = readBoundaries(gridDict);
+    const auto boundaries = readBoundaries<D>(gridDict);
     const Dictionary materialsDict = readCaseFile(dir, "constant/materials");
-    const auto materials = readMaterials(materialsDict);
-    for (const auto& m : materials)  // a polar scene: the sides' `rotation` keywords, checked here too
-        if (m->needsRotation()) {
-            readRotationSides(gridDict, mirrorSides(boundaries));
-            break;
-        }
+    const auto materials = readMaterials<D>(materialsDict);
+    if constexpr (D == 2)
+        for (const auto& m : materials)  // a polar scene: the sides' `rotation` keywords, checked here too
+            if (m->needsRotation()) {
+                readRotationSides(gridDict, mirrorSides(boundaries));
+                break;
+            }
     const Dictionary bodiesDict = readCaseFile(dir, "constant/bodies");
-    auto filled = fillBodies(bodiesDict, grid, materials, readGravity(dir));
+    std::array<bool, Space<D>::nFaces> mirror{};
+    for (int side = 0; side < Space<D>::nFaces; ++side) mirror[side] = boundaries[side]->isMirror();
+    auto filled = fillBodies<D>(bodiesDict, grid, materials, readGravity<D>(dir), mirror);
     // The arrays the materials declare, so that the first time directory holds what every
     // later one does (ParaView colours by yieldState from the start).
     for (const auto& m : materials) m->declareFields(filled.particles);
@@ -59,6 +62,17 @@ InitialiseSummary initialiseCase(const std::string& dir, bool overwrite)
     pvd.add(t0, start + "/particles.vtp", 0);
     pvd.write();
     return {filled.particles.size(), filled.bodyNames.size(), start};
+}
+
+} // namespace
+
+InitialiseSummary initialiseCase(const std::string& dir, bool overwrite)
+{
+    const Dictionary control = readCaseFile(dir, "system/controlDict");
+    Plugins::open(control, "libs");
+    Dictionary gridDict = readCaseFile(dir, "constant/grid");
+    if (caseDimension(gridDict) == 3) return initialise<3>(dir, overwrite, control, std::move(gridDict));
+    return initialise<2>(dir, overwrite, control, std::move(gridDict));
 }
 
 } // namespace gpic

@@ -17,7 +17,7 @@ namespace fs = std::filesystem;
 
 namespace {
 //- Map the material ids stored in a time directory onto the order of constant/materials.
-void remapMaterials(Particles<2>& p, const std::vector<std::string>& stored,
+template <int D> void remapMaterials(Particles<D>& p, const std::vector<std::string>& stored,
                     const std::vector<std::string>& current, const std::string& file)
 {
     std::vector<int> map(stored.size(), -1);
@@ -54,7 +54,7 @@ std::string startTimeName(const std::string& dir, const RunOptions& options, con
 bool hasFile(const std::string& dir, const char* relativePath) { return fs::exists(fs::path(dir) / relativePath); }
 } // namespace
 
-void Case::warnUnused() const
+template <int D> void Case<D>::warnUnused() const
 {
     controlDict.warnUnused();
     gridDict.warnUnused();
@@ -62,10 +62,10 @@ void Case::warnUnused() const
     schemes.warnUnused();
 }
 
-std::unique_ptr<Case> readCase(const RunOptions& options)
+template <int D> std::unique_ptr<Case<D>> readCase(const RunOptions& options)
 {
-    auto run = std::make_unique<Case>();
-    Case& c = *run;
+    auto run = std::make_unique<Case<D>>();
+    Case<D>& c = *run;
     const std::string& dir = options.caseDir;
     c.controlDict = readCaseFile(dir, "system/controlDict");
     setQuiet(options.quiet);
@@ -85,10 +85,13 @@ std::unique_ptr<Case> readCase(const RunOptions& options)
     const std::string startName = startTimeName(dir, options, *c.timeControl);
 
     c.gridDict = readCaseFile(dir, "constant/grid");
-    SolverInputs<2> in{Grid<2>(c.gridDict)};
-    in.boundaries = readBoundaries(c.gridDict);
+    if (caseDimension(c.gridDict) != D)
+        c.gridDict.fail("nCells", "constant/grid describes a " + std::to_string(caseDimension(c.gridDict)) +
+                                      "D scene, read as " + std::to_string(D) + "D");
+    SolverInputs<D> in{Grid<D>(c.gridDict)};
+    in.boundaries = readBoundaries<D>(c.gridDict);
     c.materialsDict = readCaseFile(dir, "constant/materials");
-    in.materials = readMaterials(c.materialsDict);
+    in.materials = readMaterials<D>(c.materialsDict);
     const std::vector<std::string> materials = materialNames(in.materials);
 
     if (hasFile(dir, "system/mpmSchemes")) c.schemes = readCaseFile(dir, "system/mpmSchemes");
@@ -109,7 +112,7 @@ std::unique_ptr<Case> readCase(const RunOptions& options)
     c.sortInterval = schemes.getOrDefault<long>("sortInterval", 100);
     if (c.sortInterval < 0) schemes.fail("sortInterval", "sortInterval must be >= 0 (0: never sort)");
     c.scheme = Registry<UpdateScheme>::select(c.schemeName, schemes, schemes, "updateScheme");
-    in.shape = Registry<ShapeFunction<2>>::select(c.shapeName, schemes, schemes, "shapeFunction");
+    in.shape = Registry<ShapeFunction<D>>::select(c.shapeName, schemes, schemes, "shapeFunction");
     if (in.grid.axisymmetric()) {  // what the hoop terms are not yet written for
         if (!in.shape->servesAxisymmetric())
             schemes.fail("shapeFunction", "shapeFunction " + c.shapeName + " is not yet available with geometry "
@@ -129,7 +132,7 @@ std::unique_ptr<Case> readCase(const RunOptions& options)
     in.time = c.time;
 
     // The particles a stage holds back (a restart inside a fill) belong to the scene as well.
-    Particles<2> dormant;
+    Particles<D> dormant;
     const fs::path dormantFile = fs::path(dir) / startName / "dormant.vtp";
     const Dictionary* stagesDict = controlDict.subDictPtr("stages");
     if (stagesDict && fs::exists(dormantFile)) {
@@ -138,28 +141,33 @@ std::unique_ptr<Case> readCase(const RunOptions& options)
         readParticles(dormantFile.string(), dormant, t, &stored);
         remapMaterials(dormant, stored, materials, startName + "/dormant.vtp");
     }
-    in.carryRotation = CosseratRotation::polarScene(dormant, in.materials);
-    const bool polar = in.carryRotation || CosseratRotation::polarScene(in.particles, in.materials);
+    bool polar = false;
+    if constexpr (D == 2) {
+        in.carryRotation = CosseratRotation::polarScene(dormant, in.materials);
+        polar = in.carryRotation || CosseratRotation::polarScene(in.particles, in.materials);
+    }
     if (polar && in.grid.axisymmetric())
         for (const auto& m : in.materials)
             if (m->needsRotation())
                 c.materialsDict.fail(m->name(), "material '" + m->name() + "' is polar (Cosserat), not yet "
                                                 "available with geometry axisymmetric (constant/grid)");
 
-    c.gravity = readGravity(dir);
+    c.gravity = readGravity<D>(dir);
     in.gravity = c.gravity;
     in.damping = damping;
     in.massScaling = MassScaling::read(controlDict, c.timeControl->courant(), MassScaling());
     const MassScaling massScaling = in.massScaling;  // the stages' default
-    if (polar) in.rotationSides = readRotationSides(c.gridDict, mirrorSides(in.boundaries));
+    if constexpr (D == 2)
+        if (polar) in.rotationSides = readRotationSides(c.gridDict, mirrorSides(in.boundaries));
     std::optional<Dictionary> rigidBodiesDict;  // kept for the stages' drivers
     if (hasFile(dir, "constant/rigidBodies")) {
         rigidBodiesDict = readCaseFile(dir, "constant/rigidBodies");
-        if (polar) in.rigidRotation = readRigidRotation(*rigidBodiesDict, bodyNames);
-        in.rigidBodies = readRigidBodies(*rigidBodiesDict, bodyNames);
+        if constexpr (D == 2)
+            if (polar) in.rigidRotation = readRigidRotation(*rigidBodiesDict, bodyNames);
+        in.rigidBodies = readRigidBodies<D>(*rigidBodiesDict, bodyNames);
     }
     c.hasLoads = hasFile(dir, "constant/loads");
-    if (c.hasLoads) in.loads = readLoads(readCaseFile(dir, "constant/loads"));
+    if (c.hasLoads) in.loads = readLoads<D>(readCaseFile(dir, "constant/loads"));
     massScaling.refuseLoads(controlDict, c.hasLoads);
     in.bodyNames = bodyNames;
     if (hasFile(dir, "constant/contactProperties")) {
@@ -167,26 +175,26 @@ std::unique_ptr<Case> readCase(const RunOptions& options)
         ContactScene scene{dir, bodyNames, {}};
         for (int b = 0; b < scene.nBodies(); ++b)
             scene.rigid.push_back(static_cast<std::size_t>(b) < in.rigidBodies.size() && in.rigidBodies[b]);
-        in.contact = ContactPass<2>::New(contactDict, scene, in.grid);
+        in.contact = ContactPass<D>::New(contactDict, scene, in.grid);
         contactDict.warnUnused();
     }
-    c.solver = std::make_unique<MpmSolver<2>>(std::move(in));
-    MpmSolver<2>& solver = *c.solver;
+    c.solver = std::make_unique<MpmSolver<D>>(std::move(in));
+    MpmSolver<D>& solver = *c.solver;
 
     if (stagesDict) {
-        StageSetup setup;
+        StageSetup<D> setup;
         setup.bodyNames = bodyNames;
         setup.gravity = c.gravity;
         setup.rigidBodies = rigidBodiesDict ? &*rigidBodiesDict : nullptr;
-        for (int side = 0; side < 4; ++side)
+        for (int side = 0; side < Space<D>::nFaces; ++side)
             setup.sideHasOpening[side] = solver.boundary(static_cast<GridSide>(side)).hasOpening();
-        setup.cellHeight = solver.grid().cellSize().y();
+        setup.cellHeight = solver.grid().cellSize()[D - 1];
         setup.gridMin = solver.grid().origin();
         setup.gridMax = solver.grid().upper();
         setup.massScaling = massScaling;
         setup.courant = c.timeControl->courant();
         setup.hasLoads = c.hasLoads;
-        c.stages = std::make_unique<StageSequence>(*stagesDict, std::move(setup), dir);
+        c.stages = std::make_unique<StageSequence<D>>(*stagesDict, std::move(setup), dir);
         if (c.hasLoads && c.stages->changesParticles())
             controlDict.fail("stages", "the loads of constant/loads hold particle indices: with loads no stage may "
                                        "wake, put to sleep, fill or dig particles (give every stage all bodies)");
@@ -202,10 +210,10 @@ std::unique_ptr<Case> readCase(const RunOptions& options)
     c.context = RunContext{dir, startName, bodyNames, materials};
     if (const Dictionary* fns = controlDict.subDictPtr("functions"))
         for (const auto& key : fns->keys()) {
-            c.functions.push_back(FunctionObject::New(fns->subDict(key), c.context));
-            FunctionObject* f = c.functions.back().get();
+            c.functions.push_back(FunctionObject<D>::New(fns->subDict(key), c.context));
+            FunctionObject<D>* f = c.functions.back().get();
             for (const StepPoint point : f->stepPoints())
-                solver.addHook(point, [f, point](const MpmSolver<2>& s) { f->at(point, s); });
+                solver.addHook(point, [f, point](const MpmSolver<D>& s) { f->at(point, s); });
         }
     // Their running state where picSolver wrote the start directory (not picInit's 0/).
     const fs::path functionState = fs::path(dir) / startName / "uniform/functionObjects";
@@ -223,5 +231,10 @@ std::unique_ptr<Case> readCase(const RunOptions& options)
     c.timeControl->checkStable(solver.criticalTimeStep(), why.str());
     return run;
 }
+
+template struct Case<2>;
+template struct Case<3>;
+template std::unique_ptr<Case<2>> readCase<2>(const RunOptions&);
+template std::unique_ptr<Case<3>> readCase<3>(const RunOptions&);
 
 } // namespace gpic

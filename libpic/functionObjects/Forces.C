@@ -11,12 +11,13 @@
 
 namespace gpic {
 
-GPIC_REGISTER(FunctionObject, Forces, "forces")
+GPIC_REGISTER_DIMS(FunctionObject, Forces, "forces")
 
-Forces::Forces(const Dictionary& dict, const RunContext& context)
-    : FunctionObject(dict, context),
+template <int D>
+Forces<D>::Forces(const Dictionary& dict, const RunContext& context)
+    : FunctionObject<D>(dict, context),
       names_(dict.getOrDefault<std::vector<std::string>>("bodies", {})),
-      CofR_(dict.getOrDefault<Vector2>("CofR", Vector2::Zero())),
+      CofR_(dict.getOrDefault<Vector>("CofR", Vector::Zero())),
       file_(dict.fileName()),
       line_(dict.lineOf(dict.found("bodies") ? "bodies" : "type"))
 {
@@ -24,10 +25,13 @@ Forces::Forces(const Dictionary& dict, const RunContext& context)
         if (std::find(context.bodyNames.begin(), context.bodyNames.end(), n) == context.bodyNames.end())
             dict.fail("bodies", "forces " + name() + ": '" + n + "' is not a body; valid choices: " +
                                     choiceList(context.bodyNames));
+    if (D == 3 && dict.found("faces"))
+        dict.fail("faces", "forces " + name() + ": faces are straight segments of a plane scene; a 3D case "
+                           "reports the force and moment of each whole body");
     if (const Dictionary* faces = dict.subDictPtr("faces")) {
         for (const auto& key : faces->keys()) {
             const Dictionary& f = faces->subDict(key);
-            Face face{key, f.getWord("body", context.bodyNames), -1, f.get<Vector2>("from"), f.get<Vector2>("to")};
+            Face face{key, f.getWord("body", context.bodyNames), -1, f.get<Vector>("from"), f.get<Vector>("to")};
             if (!((face.to - face.from).norm() > 0.0))
                 f.fail("to", "forces " + name() + ": face '" + key + "' has no length (from = to)");
             faces_.push_back(face);
@@ -35,7 +39,8 @@ Forces::Forces(const Dictionary& dict, const RunContext& context)
     }
 }
 
-void Forces::start(const MpmSolver<2>& solver, double)
+template <int D>
+void Forces<D>::start(const MpmSolver<D>& solver, double)
 {
     const auto& all = context().bodyNames;
     std::vector<std::string> rigid;
@@ -59,13 +64,21 @@ void Forces::start(const MpmSolver<2>& solver, double)
         face.body = static_cast<int>(std::find(all.begin(), all.end(), face.bodyName) - all.begin());
     }
     std::ofstream& os = file("forces.dat");
-    os << "# force of the material on each body [N/m], its moment about CofR (" << CofR_.x() << ' '
-       << CofR_.y() << ") [N m/m] and the body's mean displacement [m]; forces on faces [N/m]; the work "
-          "each body has done on the material [J/m]"
-       << (solver.grid().axisymmetric() ? "; all per radian, then the axial force of the revolution [N]" : "")
-       << "\n# time";
-    for (int b : bodies_)
-        for (const char* c : {"Fx", "Fy", "Mz", "dx", "dy"}) os << ' ' << all[b] << ':' << c;
+    if constexpr (D == 2) {
+        os << "# force of the material on each body [N/m], its moment about CofR (" << CofR_.x() << ' '
+           << CofR_.y() << ") [N m/m] and the body's mean displacement [m]; forces on faces [N/m]; the work "
+              "each body has done on the material [J/m]"
+           << (solver.grid().axisymmetric() ? "; all per radian, then the axial force of the revolution [N]" : "")
+           << "\n# time";
+        for (int b : bodies_)
+            for (const char* c : {"Fx", "Fy", "Mz", "dx", "dy"}) os << ' ' << all[b] << ':' << c;
+    } else {
+        os << "# force of the material on each body [N], its moment about CofR (" << CofR_.transpose()
+           << ") [N m] and the body's mean displacement [m]; the work each body has done on the material [J]"
+           << "\n# time";
+        for (int b : bodies_)
+            for (const char* c : {"Fx", "Fy", "Fz", "Mx", "My", "Mz", "dx", "dy", "dz"}) os << ' ' << all[b] << ':' << c;
+    }
     for (const auto& face : faces_) os << ' ' << face.name << ":Fx " << face.name << ":Fy";
     for (int b : bodies_) os << ' ' << all[b] << ":W";
     axisymmetric_ = solver.grid().axisymmetric();
@@ -74,12 +87,13 @@ void Forces::start(const MpmSolver<2>& solver, double)
     os << std::endl;
 }
 
-void Forces::write(const MpmSolver<2>& solver, double time)
+template <int D>
+void Forces<D>::write(const MpmSolver<D>& solver, double time)
 {
-    const Particles<2>& p = solver.particles();
+    const Particles<D>& p = solver.particles();
     const std::size_t nBodies = context().bodyNames.size();
     std::vector<double> mass(nBodies, 0.0);
-    std::vector<Vector2> moved(nBodies, Vector2::Zero());
+    std::vector<Vector> moved(nBodies, Vector::Zero());
     for (std::size_t q = 0; q < p.size(); ++q) {
         const auto b = static_cast<std::size_t>(p.body[q]);
         if (b >= nBodies) continue;
@@ -91,21 +105,29 @@ void Forces::write(const MpmSolver<2>& solver, double time)
     os << time;
     for (int b : bodies_) {
         const auto k = static_cast<std::size_t>(b);
-        const RigidBodyLoad<2> load = k < loads.size() ? loads[k] : RigidBodyLoad<2>{};
-        const Vector2 d = mass[k] > 0.0 ? Vector2(moved[k] / mass[k]) : Vector2::Zero();
-        os << ' ' << load.force.x() << ' ' << load.force.y() << ' ' << load.momentAbout(CofR_) << ' '
-           << d.x() << ' ' << d.y();
+        const RigidBodyLoad<D> load = k < loads.size() ? loads[k] : RigidBodyLoad<D>{};
+        const Vector d = mass[k] > 0.0 ? Vector(moved[k] / mass[k]) : Vector::Zero();
+        if constexpr (D == 2)
+            os << ' ' << load.force.x() << ' ' << load.force.y() << ' ' << load.momentAbout(CofR_) << ' '
+               << d.x() << ' ' << d.y();
+        else {
+            const typename Space<D>::Moment M = load.momentAbout(CofR_);
+            for (const Vector* v : std::initializer_list<const Vector*>{&load.force, &M, &d})
+                for (int a = 0; a < D; ++a) os << ' ' << (*v)[a];
+        }
     }
-    const Grid<2>& grid = solver.grid();
+    [[maybe_unused]] const Grid<D>& grid = solver.grid();
     for (const auto& face : faces_) {
         const auto k = static_cast<std::size_t>(face.body);
-        const Vector2 d = mass[k] > 0.0 ? Vector2(moved[k] / mass[k]) : Vector2::Zero();
-        const FaceBand band(face.from + d, face.to + d, grid.cellSize().maxCoeff());
-        Vector2 F = Vector2::Zero();
-        if (!grid.fContact.empty())
-            for (int n : grid.active)
-                if (band.station(grid.nodePosition(n))) F += grid.fContact[static_cast<std::size_t>(n)];
-        os << ' ' << F.x() << ' ' << F.y();
+        const Vector d = mass[k] > 0.0 ? Vector(moved[k] / mass[k]) : Vector::Zero();
+        if constexpr (D == 2) {
+            const FaceBand band(face.from + d, face.to + d, grid.cellSize().maxCoeff());
+            Vector F = Vector::Zero();
+            if (!grid.fContact.empty())
+                for (int n : grid.active)
+                    if (band.station(grid.nodePosition(n))) F += grid.fContact[static_cast<std::size_t>(n)];
+            os << ' ' << F.x() << ' ' << F.y();
+        }
     }
     for (double w : work_) os << ' ' << w;
     if (axisymmetric_)
@@ -116,7 +138,8 @@ void Forces::write(const MpmSolver<2>& solver, double time)
     os << std::endl;  // readable while the run goes on
 }
 
-void Forces::at(StepPoint, const MpmSolver<2>& solver)
+template <int D>
+void Forces<D>::at(StepPoint, const MpmSolver<D>& solver)
 {
     const auto& loads = solver.rigidBodyLoads();
     const double dt = solver.deltaT(), tMid = solver.time() + 0.5 * dt;
@@ -126,13 +149,18 @@ void Forces::at(StepPoint, const MpmSolver<2>& solver)
     }
 }
 
-void Forces::writeState(std::ostream& os) const
+template <int D>
+void Forces<D>::writeState(std::ostream& os) const
 {
     os << "    work (";
     for (double w : work_) os << ' ' << exactNumber(w);
     os << " );\n";
 }
 
-void Forces::readState(const Dictionary& state) { work_ = state.getOrDefault<std::vector<double>>("work", {}); }
+template <int D>
+void Forces<D>::readState(const Dictionary& state) { work_ = state.getOrDefault<std::vector<double>>("work", {}); }
+
+template class Forces<2>;
+template class Forces<3>;
 
 } // namespace gpic

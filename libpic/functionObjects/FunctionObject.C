@@ -15,7 +15,8 @@ std::string choiceList(const std::vector<std::string>& names)
     return list.empty() ? "(none)" : list;
 }
 
-FunctionObject::FunctionObject(const Dictionary& dict, const RunContext& context)
+template <int D>
+FunctionObject<D>::FunctionObject(const Dictionary& dict, const RunContext& context)
     : name_(dict.name().substr(dict.name().find_last_of('/') + 1)), context_(context),
       writeInterval_(dict.found("writeInterval")
                          ? dict.getChecked<long>("writeInterval", [](const long& n) { return n > 0; },
@@ -23,18 +24,21 @@ FunctionObject::FunctionObject(const Dictionary& dict, const RunContext& context
                          : 1)
 {}
 
-void FunctionObject::execute(const MpmSolver<2>& solver, double time, long step)
+template <int D>
+void FunctionObject<D>::execute(const MpmSolver<D>& solver, double time, long step)
 {
     if (step % writeInterval_ == 0) write(solver, time);
 }
 
-std::optional<double> FunctionObject::readFactor(const Dictionary& dict)
+template <int D>
+std::optional<double> FunctionObject<D>::readFactor(const Dictionary& dict)
 {
     if (!dict.found("factor")) return std::nullopt;
     return dict.getChecked<double>("factor", [](const double& f) { return f > 0; }, "factor > 0");
 }
 
-std::vector<int> FunctionObject::bodyIds(const Dictionary& dict, const std::string& keyword) const
+template <int D>
+std::vector<int> FunctionObject<D>::bodyIds(const Dictionary& dict, const std::string& keyword) const
 {
     std::vector<int> ids;
     const auto& names = context_.bodyNames;
@@ -48,7 +52,8 @@ std::vector<int> FunctionObject::bodyIds(const Dictionary& dict, const std::stri
     return ids;
 }
 
-std::ofstream& FunctionObject::file(const std::string& fileName)
+template <int D>
+std::ofstream& FunctionObject<D>::file(const std::string& fileName)
 {
     for (auto& [n, f] : files_)
         if (n == fileName) return *f;
@@ -62,9 +67,13 @@ std::ofstream& FunctionObject::file(const std::string& fileName)
     return *files_.back().second;
 }
 
-std::unique_ptr<FunctionObject> FunctionObject::New(const Dictionary& dict, const RunContext& context)
+template <int D>
+std::unique_ptr<FunctionObject<D>> FunctionObject<D>::New(const Dictionary& dict, const RunContext& context)
 {
-    return Registry<FunctionObject>::select(dict, dict, context);
+    return Registry<FunctionObject<D>>::select(dict, dict, context);
 }
+
+template class FunctionObject<2>;
+template class FunctionObject<3>;
 
 } // namespace gpic

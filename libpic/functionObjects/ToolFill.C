@@ -9,12 +9,12 @@
 
 namespace gpic {
 
-GPIC_REGISTER(FunctionObject, ToolFill, "toolFill")
+GPIC_REGISTER(FunctionObject<2>, ToolFill, "toolFill")
 
 ToolFill::ToolFill(const Dictionary& dict, const RunContext& context)
-    : FunctionObject(dict, context),
+    : FunctionObject<2>(dict, context),
       bodyName_(dict.getWord("body", context.bodyNames)),
-      region_(Shape::New(dict.subDict("region"))),
+      region_(Shape<2>::New(dict.subDict("region"))),
       givenFactor_(readFactor(dict)),
       file_(dict.fileName()),
       line_(dict.lineOf("body"))

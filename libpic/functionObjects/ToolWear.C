@@ -12,14 +12,14 @@
 
 namespace gpic {
 
-GPIC_REGISTER(FunctionObject, ToolWear, "toolWear")
+GPIC_REGISTER(FunctionObject<2>, ToolWear, "toolWear")
 
 namespace {
 const auto positive = [](const double& v) { return v > 0; };
 }
 
 ToolWear::ToolWear(const Dictionary& dict, const RunContext& context)
-    : FunctionObject(dict, context),
+    : FunctionObject<2>(dict, context),
       bodyName_(dict.getWord("body", context.bodyNames)),
       wearPerWork_(dict.getChecked<double>("wearCoefficient", positive, "wearCoefficient > 0") /
                    dict.getChecked<double>("hardness", positive, "hardness > 0 (Pa)")),

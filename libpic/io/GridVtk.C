@@ -23,7 +23,8 @@ namespace gpic {
 
 namespace {
 
-vtkSmartPointer<vtkDoubleArray> nodalVectors(const char* name, const std::vector<Vector2>& v)
+template <class Vector>
+vtkSmartPointer<vtkDoubleArray> nodalVectors(const char* name, const std::vector<Vector>& v)
 {
     auto a = vtkSmartPointer<vtkDoubleArray>::New();
     a->SetName(name);
@@ -33,19 +34,20 @@ vtkSmartPointer<vtkDoubleArray> nodalVectors(const char* name, const std::vector
     for (std::size_t i = 0; i < v.size(); ++i) {
         out[3 * i] = v[i].x();
         out[3 * i + 1] = v[i].y();
-        out[3 * i + 2] = 0.0;
+        out[3 * i + 2] = Vector::SizeAtCompileTime == 3 ? v[i][Vector::SizeAtCompileTime - 1] : 0.0;
     }
     return a;
 }
 
 } // namespace
 
-void writeGrid(const std::string& path, const Grid<2>& g, double time)
+template <int D> void writeGrid(const std::string& path, const Grid<D>& g, double time)
 {
     vtkNew<vtkImageData> image;
-    image->SetOrigin(g.origin().x(), g.origin().y(), 0.0);
-    image->SetSpacing(g.cellSize().x(), g.cellSize().y(), 1.0);
-    image->SetExtent(0, g.nx(), 0, g.ny(), 0, 0);
+    const bool solid = D == 3;
+    image->SetOrigin(g.origin().x(), g.origin().y(), solid ? g.origin()[D - 1] : 0.0);
+    image->SetSpacing(g.cellSize().x(), g.cellSize().y(), solid ? g.cellSize()[D - 1] : 1.0);
+    image->SetExtent(0, g.cells(0), 0, g.cells(1), 0, solid ? g.cells(D - 1) : 0);
 
     vtkNew<vtkDoubleArray> mass;
     mass->SetName("mass");
@@ -68,6 +70,9 @@ void writeGrid(const std::string& path, const Grid<2>& g, double time)
     vtkNew<vtkXMLImageDataWriter> writer;
     detail::writeXmlAtomically(writer, image, path, "grid");
 }
+
+template void writeGrid(const std::string&, const Grid<2>&, double);
+template void writeGrid(const std::string&, const Grid<3>&, double);
 
 vtkSmartPointer<vtkImageData> readGridImage(const std::string& path, const std::string& hint)
 {

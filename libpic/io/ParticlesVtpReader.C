@@ -65,7 +65,7 @@ const ParticleFileArray* required(const std::vector<const ParticleFileArray*>& p
     return a;
 }
 
-bool inPoints(const ParticleField<2>& f) { return f.storedIn && std::string(f.storedIn) == "points"; }
+template <int D> bool inPoints(const ParticleField<D>& f) { return f.storedIn && std::string(f.storedIn) == "points"; }
 
 //- One value of VTK type `type` at `bytes`, as a double (vtkDataArray::GetComponent).
 template <class T> double as(const unsigned char* bytes)
@@ -98,11 +98,15 @@ void get(const double* c, Vector2& out) { out = Vector2(c[0], c[1]); }
 //- The full 3x3 tensor's (11, 22, 33, 12).
 void get(const double* c, SymTensor& out) { out = SymTensor(c[0], c[4], c[8], c[1]); }
 void get(const double* c, PlaneSpace::Gradient& out) { out << c[0], c[1], c[3], c[4]; }
+void get(const double* c, Space<3>::Vector& out) { out = Space<3>::Vector(c[0], c[1], c[2]); }
+//- The full 3x3 tensor's (11 22 33 12 23 13).
+void get(const double* c, Space<3>::SymTensor& out) { out << c[0], c[4], c[8], c[1], c[5], c[2]; }
+void get(const double* c, Space<3>::Gradient& out) { out << c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7], c[8]; }
 
 //- Where the values of one file array go: a table entry, one component of the array into
 //  a double array, or the positions.
-struct Destination {
-    FieldArray<2> array;
+template <int D> struct Destination {
+    FieldArray<D> array;
     int component = 0;  //- > 0: that component only (an array stored in another)
 };
 
@@ -115,7 +119,8 @@ public:
     {
     }
 
-    void read(const ParticleFileArray& a, detail::ParticleChecksum* checksum, const std::vector<Destination>& to)
+    template <int D>
+    void read(const ParticleFileArray& a, detail::ParticleChecksum* checksum, const std::vector<Destination<D>>& to)
     {
         in_.seekg(static_cast<std::streamoff>(a.dataAt));
         if (to.empty()) {  // only summed: the bytes in any pieces
@@ -137,7 +142,7 @@ public:
             fill(a, count * nc * size);
             if (checksum) checksum->add(raw_.data(), count * nc * size);
             for (std::size_t k = 0; k < count * nc; ++k) values_[k] = convert(raw_.data() + k * size);
-            for (const Destination& d : to) store(d, begin, count, nc);
+            for (const Destination<D>& d : to) store(d, begin, count, nc);
         }
         if (checksum) checksum->endArray();
     }
@@ -162,7 +167,7 @@ private:
                                            "' runs past the end of the file");
     }
 
-    void store(const Destination& d, std::size_t begin, std::size_t count, std::size_t nc) const
+    template <int D> void store(const Destination<D>& d, std::size_t begin, std::size_t count, std::size_t nc) const
     {
         std::visit(
             [&](auto* values) {
@@ -184,7 +189,8 @@ private:
 
 } // namespace
 
-void readParticles(const std::string& path, Particles<2>& p, double& time,
+template <int D>
+void readParticles(const std::string& path, Particles<D>& p, double& time,
                    std::vector<std::string>* materialNames, std::vector<std::string>* bodyNames)
 {
     std::error_code ec;
@@ -204,14 +210,14 @@ void readParticles(const std::string& path, Particles<2>& p, double& time,
 
     // Look every required array up before touching p, so a bad file leaves p unchanged. An
     // optional group is in the file when its first array is; then all of its arrays must be.
-    const std::vector<ParticleField<2>>& fields = particleFields<2>();
+    const std::vector<ParticleField<D>>& fields = particleFields<D>();
     std::array<bool, 4> groupInFile{true, false, false, false};
-    for (const ParticleField<2>& f : fields)
+    for (const ParticleField<D>& f : fields)
         if (f.group != FieldGroup::core && f.role == FieldRole::state && *f.name && numericArray(pointArrays, f.name))
             groupInFile[static_cast<int>(f.group)] = true;
     std::vector<const ParticleFileArray*> arrays(fields.size(), nullptr);
     for (std::size_t k = 0; k < fields.size(); ++k) {
-        const ParticleField<2>& f = fields[k];
+        const ParticleField<D>& f = fields[k];
         if (f.role != FieldRole::state || !groupInFile[static_cast<int>(f.group)] || inPoints(f)) continue;
         arrays[k] = f.storedIn ? numericArray(pointArrays, f.storedIn)
                                : required(pointArrays, f.name, static_cast<std::uint64_t>(f.components), n64, path);
@@ -229,21 +235,21 @@ void readParticles(const std::string& path, Particles<2>& p, double& time,
     detail::ParticleChecksum checksum;
     detail::ParticleChecksum* const check = sum.empty() ? nullptr : &checksum;
 
-    Particles<2> result;
-    for (const ParticleField<2>& f : fields)
+    Particles<D> result;
+    for (const ParticleField<D>& f : fields)
         if (f.group != FieldGroup::core && groupInFile[static_cast<int>(f.group)]) result.carry(f.group);
     result.resize(n);
     ArrayReader reader(path);
     // The checksum's order: the points, then the point arrays in file order.
     if (points) {
-        std::vector<Destination> to;
-        for (const ParticleField<2>& f : fields)
+        std::vector<Destination<D>> to;
+        for (const ParticleField<D>& f : fields)
             if (inPoints(f)) to.push_back({f.array(result), 0});
         reader.read(*points, check, to);
     }
     for (const ParticleFileArray* a : pointArrays) {
         if (a->type == "String") continue;  // not a data array: neither read nor summed
-        std::vector<Destination> to;
+        std::vector<Destination<D>> to;
         for (std::size_t k = 0; k < fields.size(); ++k)
             if (arrays[k] == a) to.push_back({fields[k].array(result), fields[k].storedIn ? fields[k].storedComponent : 0});
         // History variables are exactly the extra one-component Float64 arrays.
@@ -267,5 +273,10 @@ void readParticles(const std::string& path, Particles<2>& p, double& time,
     if (bodyNames) *bodyNames = strings("bodyNames");
     p = std::move(result);
 }
+
+template void readParticles(const std::string&, Particles<2>&, double&, std::vector<std::string>*,
+                            std::vector<std::string>*);
+template void readParticles(const std::string&, Particles<3>&, double&, std::vector<std::string>*,
+                            std::vector<std::string>*);
 
 } // namespace gpic

@@ -79,14 +79,30 @@ void put(const PlaneSpace::Gradient& C, double* out, int)
     out[3] = C(1, 0); out[4] = C(1, 1); out[5] = 0.0;
     out[6] = 0.0;     out[7] = 0.0;     out[8] = 0.0;
 }
+void put(const Space<3>::Vector& v, double* out, int)
+{
+    out[0] = v.x(); out[1] = v.y(); out[2] = v.z();
+}
+//- (11 22 33 12 23 13) as a full 3x3 tensor, row-major.
+void put(const Space<3>::SymTensor& s, double* out, int)
+{
+    out[0] = s[XX]; out[1] = s[XY]; out[2] = s[XZ];
+    out[3] = s[XY]; out[4] = s[YY]; out[5] = s[YZ];
+    out[6] = s[XZ]; out[7] = s[YZ]; out[8] = s[ZZ];
+}
+void put(const Space<3>::Gradient& C, double* out, int)
+{
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) out[3 * i + j] = C(i, j);
+}
 
-OutputArray stateArray(const ParticleField<2>& f, const Particles<2>& p)
+template <int D> OutputArray stateArray(const ParticleField<D>& f, const Particles<D>& p)
 {
     OutputArray a;
     a.name = f.name;
     a.components = f.components;
     a.componentNames = f.components > 1;
-    const FieldArray<2> source = fieldArray(f, p);
+    const FieldArray<D> source = fieldArray(f, p);
     a.tuples = std::visit([](const auto* values) { return values->size(); }, source);
     a.type = std::holds_alternative<std::vector<int>*>(source) ? ValueType::int32 : ValueType::float64;
     const int nc = f.components;
@@ -103,7 +119,7 @@ OutputArray stateArray(const ParticleField<2>& f, const Particles<2>& p)
     return a;
 }
 
-OutputArray derivedArray(const ParticleField<2>& f, const Particles<2>& p)
+template <int D> OutputArray derivedArray(const ParticleField<D>& f, const Particles<D>& p)
 {
     OutputArray a;
     a.name = f.name;
@@ -130,7 +146,7 @@ OutputArray scalarArray(const std::string& name, const std::vector<double>& valu
     return a;
 }
 
-OutputArray pointsArray(const Particles<2>& p)
+template <int D> OutputArray pointsArray(const Particles<D>& p)
 {
     OutputArray a;
     a.name = "Points";
@@ -139,7 +155,7 @@ OutputArray pointsArray(const Particles<2>& p)
     a.fill = [&p](std::size_t begin, std::size_t end, void* out) {
         double* o = static_cast<double*>(out);
         for (std::size_t i = begin; i < end; ++i, o += 3) {
-            o[0] = p.x[i].x(); o[1] = p.x[i].y(); o[2] = 0.0;
+            o[0] = p.x[i].x(); o[1] = p.x[i].y(); o[2] = D == 3 ? p.x[i][D - 1] : 0.0;
         }
     };
     return a;
@@ -308,7 +324,8 @@ void writeBlock(detail::AtomicFile& out, const StringArray& a)
 
 } // namespace
 
-void writeParticles(const std::string& path, const Particles<2>& p, double time,
+template <int D>
+void writeParticles(const std::string& path, const Particles<D>& p, double time,
                     const std::vector<std::string>& materialNames,
                     const std::vector<std::string>& bodyNames)
 {
@@ -322,11 +339,11 @@ void writeParticles(const std::string& path, const Particles<2>& p, double time,
 
     // The point arrays in the order of the table, then the history variables.
     std::vector<OutputArray> pointArrays;
-    for (const ParticleField<2>& f : particleFields<2>()) {
+    for (const ParticleField<D>& f : particleFields<D>()) {
         if (!p.carries(f.group) || f.role == FieldRole::scratch || f.storedIn) continue;
         pointArrays.push_back(f.role == FieldRole::derived ? derivedArray(f, p) : stateArray(f, p));
     }
-    for (const ParticleField<2>& f : particleFields<2>()) {  // arrays stored inside another (not the points)
+    for (const ParticleField<D>& f : particleFields<D>()) {  // arrays stored inside another (not the points)
         if (!p.carries(f.group) || !f.storedIn) continue;
         for (OutputArray& into : pointArrays)
             if (into.name == f.storedIn && into.type == ValueType::float64)
@@ -408,5 +425,10 @@ void writeParticles(const std::string& path, const Particles<2>& p, double time,
     out.write(tail.data(), tail.size());
     out.commit();
 }
+
+template void writeParticles(const std::string&, const Particles<2>&, double, const std::vector<std::string>&,
+                             const std::vector<std::string>&);
+template void writeParticles(const std::string&, const Particles<3>&, double, const std::vector<std::string>&,
+                             const std::vector<std::string>&);
 
 } // namespace gpic

@@ -47,41 +47,47 @@ double peakMemoryMiB()
 
 } // namespace
 
-Simulation::Simulation(const RunOptions& options, std::unique_ptr<Case> c)
+template <int D>
+Simulation<D>::Simulation(const RunOptions& options, std::unique_ptr<Case<D>> c)
     : options_(options), case_(std::move(c)), solver_(*case_->solver), time_(case_->time), step_(case_->step),
       times_(options.caseDir, {case_->time, case_->step, case_->context.startTimeName},
              case_->timeControl->timePrecision(), case_->writeGrid, case_->timeControl->purgeWrite(),
              case_->controlDict)
 {
-    guard_ = std::make_unique<StabilityGuard>(case_->stability, solver_, case_->context.bodyNames, case_->gravity,
+    guard_ = std::make_unique<StabilityGuard<D>>(case_->stability, solver_, case_->context.bodyNames, case_->gravity,
                                               case_->hasLoads, snapshotFile());
     if (options_.tuneThreads && threadCount() > 1) tuner_ = std::make_unique<ThreadTuner>(threadCount());
     // Every keyword has been read by now: what is left is a typo or a leftover.
     case_->warnUnused();
 
-    log() << "Case " << case_->name << ": " << solver_.particles().size() << " particles, " << solver_.grid().nx()
-          << " x " << solver_.grid().ny() << " cells, scheme " << case_->schemeName << ", shape functions "
+    log() << "Case " << case_->name << ": " << solver_.particles().size() << " particles, " << solver_.grid().nx();
+    for (int a = 1; a < D; ++a) log() << " x " << solver_.grid().cells(a);
+    log() << " cells, scheme " << case_->schemeName << ", shape functions "
           << case_->shapeName << ", starting at t = " << time_ << " (" << case_->context.startTimeName << ")\n";
-    if (const ContactPass<2>* contact = solver_.contact())
+    if (const ContactPass<D>* contact = solver_.contact())
         log() << "Contact pass: " << contact->nBodies() << " bodies with their own velocity fields, "
               << contact->summary() << "\n";
 }
 
-Simulation::~Simulation()
+template <int D>
+Simulation<D>::~Simulation()
 {
     // The run's own last good state; a stopped run has written it as a time directory.
     std::error_code ec;
     fs::remove(snapshotFile(), ec);
 }
 
-std::string Simulation::snapshotFile() const { return (fs::path(options_.caseDir) / ".lastGoodState.vtp").string(); }
+template <int D>
+std::string Simulation<D>::snapshotFile() const { return (fs::path(options_.caseDir) / ".lastGoodState.vtp").string(); }
 
-std::ostream& Simulation::log() const { return info(); }
+template <int D>
+std::ostream& Simulation<D>::log() const { return info(); }
 
-void Simulation::restartGuard()
+template <int D>
+void Simulation<D>::restartGuard()
 {
     auto before = std::move(guard_);
-    guard_ = std::make_unique<StabilityGuard>(case_->stability, solver_, case_->context.bodyNames,
+    guard_ = std::make_unique<StabilityGuard<D>>(case_->stability, solver_, case_->context.bodyNames,
                                               case_->stages->gravity(), case_->hasLoads, snapshotFile());
     guard_->start(time_, step_);
     if (before) guard_->continueStatistics(*before);
@@ -89,7 +95,8 @@ void Simulation::restartGuard()
     reportMassScaling();
 }
 
-void Simulation::reportMassScaling() const
+template <int D>
+void Simulation<D>::reportMassScaling() const
 {
     const std::vector<double>& scale = solver_.massScales();
     if (scale.empty()) return;
@@ -103,7 +110,8 @@ void Simulation::reportMassScaling() const
     log() << "; stable step " << solver_.criticalTimeStep() << " s; rigid bodies and gravity keep the true mass\n";
 }
 
-void Simulation::watchKineticRatio()
+template <int D>
+void Simulation<D>::watchKineticRatio()
 {
     if (solver_.massScales().empty()) return;
     // The start of a stage sets the material moving before it has done much work: the
@@ -122,7 +130,8 @@ void Simulation::watchKineticRatio()
     }
 }
 
-void Simulation::writeState(const Particles<2>& particles, double time, long step, double deltaT,
+template <int D>
+void Simulation<D>::writeState(const Particles<D>& particles, double time, long step, double deltaT,
                             double removedMass, const std::string& name)
 {
     // The grid and the function objects hold the current step's: written only with it.
@@ -149,14 +158,15 @@ void Simulation::writeState(const Particles<2>& particles, double time, long ste
         }
         if (case_->stages) {  // where the run is in its stages, and the sleeping particles
             case_->stages->writeStageFile(tmp, name);
-            const Particles<2>& dormant = case_->stages->pool().dormant();
+            const Particles<D>& dormant = case_->stages->pool().dormant();
             if (dormant.size() > 0)
                 writeParticles(tmp + "/dormant.vtp", dormant, time, case_->context.materialNames, case_->context.bodyNames);
         }
     });
 }
 
-void Simulation::write()
+template <int D>
+void Simulation<D>::write()
 {
     auto timer = solver_.timers().time("output");
     const std::string name = times_.nameFor(time_);
@@ -165,15 +175,16 @@ void Simulation::write()
     times_.written(time_, step_, name);
 }
 
-void Simulation::stop(const std::optional<StabilityTrip>& trip, const std::string& solverMessage)
+template <int D>
+void Simulation<D>::stop(const std::optional<StabilityTrip>& trip, const std::string& solverMessage)
 {
     std::ostringstream where;
     try {
         if (trip && trip->stateIsGood) {
             if (times_.newest().step != step_) write();
-        } else if (const GoodState& good = guard_->lastGood(); good.step > times_.newest().step) {
+        } else if (const GoodState<D>& good = guard_->lastGood(); good.step > times_.newest().step) {
             const std::string name = times_.nameFor(good.time);
-            Particles<2> particles = good.particles();  // read back once, for both files
+            Particles<D> particles = good.particles();  // read back once, for both files
             writeState(particles, good.time, good.step, good.deltaT, good.removedMass, name);
             if (case_->writeGrid)
                 writeGoodStateGrid(std::move(particles), good.time,
@@ -188,7 +199,8 @@ void Simulation::stop(const std::optional<StabilityTrip>& trip, const std::strin
     throw RunError((trip ? trip->message : solverMessage) + where.str());
 }
 
-void Simulation::writeGoodStateGrid(Particles<2> particles, double time, const std::string& path)
+template <int D>
+void Simulation<D>::writeGoodStateGrid(Particles<D> particles, double time, const std::string& path)
 {
     // The run ends here: the engine may take the good state's particles to project them.
     if (!solver_.passesHoldIndices()) {
@@ -199,12 +211,13 @@ void Simulation::writeGoodStateGrid(Particles<2> particles, double time, const s
         return;
     }
     // Loads hold particle indices: the grid's place and size, with empty fields.
-    Grid<2> empty = solver_.grid();
+    Grid<D> empty = solver_.grid();
     empty.resetFields();
     writeGrid(path, empty, time);
 }
 
-long Simulation::run()
+template <int D>
+long Simulation<D>::run()
 {
     const auto wallStart = Clock::now();
     auto lastProgress = wallStart;
@@ -243,7 +256,8 @@ long Simulation::run()
     return steps;
 }
 
-void Simulation::indexStart()
+template <int D>
+void Simulation<D>::indexStart()
 {
     const std::string& start = case_->context.startTimeName;
     PvdCollection pvd(pvdPath(options_.caseDir));
@@ -260,7 +274,8 @@ void Simulation::indexStart()
     pvd.write();
 }
 
-void Simulation::startParts()
+template <int D>
+void Simulation<D>::startParts()
 {
     if (case_->stages) case_->stages->start(solver_, time_, step_);  // begins a stage, or carries one on
     for (auto& f : case_->functions) f->start(solver_, time_);
@@ -273,12 +288,14 @@ void Simulation::startParts()
     }
 }
 
-bool Simulation::finished() const
+template <int D>
+bool Simulation<D>::finished() const
 {
     return case_->timeControl->finished(time_) || (case_->stages && case_->stages->done());
 }
 
-void Simulation::takeStep()
+template <int D>
+void Simulation<D>::takeStep()
 {
     try {
         solver_.setTime(time_);
@@ -298,7 +315,8 @@ void Simulation::takeStep()
     ++step_;
 }
 
-void Simulation::checkStep()
+template <int D>
+void Simulation<D>::checkStep()
 {
     std::optional<StabilityTrip> trip;
     {
@@ -309,7 +327,8 @@ void Simulation::checkStep()
     watchKineticRatio();
 }
 
-StageEvent Simulation::afterStep()
+template <int D>
+StageEvent Simulation<D>::afterStep()
 {
     {
         auto timer = solver_.timers().time("functionObjects");
@@ -321,7 +340,8 @@ StageEvent Simulation::afterStep()
     return stage;
 }
 
-void Simulation::honourStopSignal(bool writtenLast, Clock::time_point wallStart)
+template <int D>
+void Simulation<D>::honourStopSignal(bool writtenLast, Clock::time_point wallStart)
 {
     const int signal = StopSignals::received();
     if (!signal) return;
@@ -334,7 +354,8 @@ void Simulation::honourStopSignal(bool writtenLast, Clock::time_point wallStart)
                                   times_.newestPath());
 }
 
-void Simulation::reportProgress(Clock::time_point wallStart, Clock::time_point& lastProgress, double tStart)
+template <int D>
+void Simulation<D>::reportProgress(Clock::time_point wallStart, Clock::time_point& lastProgress, double tStart)
 {
     const auto now = Clock::now();
     if (std::chrono::duration<double>(now - lastProgress).count() < case_->progressInterval) return;
@@ -351,11 +372,12 @@ void Simulation::reportProgress(Clock::time_point wallStart, Clock::time_point& 
                       step_, deltaT_, wall, solver_.maxParticleSpeed());
     }
     log() << line;
-    if (const Stage* s = case_->stages ? case_->stages->current() : nullptr) log() << "   stage " << s->name();
+    if (const Stage<D>* s = case_->stages ? case_->stages->current() : nullptr) log() << "   stage " << s->name();
     log() << std::endl;
 }
 
-void Simulation::reportEnd(double wall, long steps, double particleUpdates)
+template <int D>
+void Simulation<D>::reportEnd(double wall, long steps, double particleUpdates)
 {
     log() << "End: t = " << time_ << ", " << steps << " steps, " << solver_.particles().size()
           << " particles, wall " << wall << " s, " << (wall > 0 ? particleUpdates / wall : 0.0)
@@ -377,6 +399,16 @@ void Simulation::reportEnd(double wall, long steps, double particleUpdates)
         log() << "Walls: " << solver_.wallReturns()
               << " particle positions put back on a wall side they had passed by less than half a cell\n";
     solver_.timers().print(log());
+}
+
+template class Simulation<2>;
+template class Simulation<3>;
+
+long runCase(const RunOptions& options)
+{
+    const Dictionary grid = readCaseFile(options.caseDir, "constant/grid");
+    if (caseDimension(grid) == 3) return Simulation<3>(options).run();
+    return Simulation<2>(options).run();
 }
 
 } // namespace gpic

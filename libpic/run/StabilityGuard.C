@@ -12,21 +12,24 @@
 namespace gpic {
 
 namespace {
-std::string str(const Vector2& v)
+template <class Vector> std::string str(const Vector& v)
 {
     std::ostringstream os;
-    os << "(" << v.x() << " " << v.y() << ")";
+    os << "(" << v.x();
+    for (int a = 1; a < Vector::SizeAtCompileTime; ++a) os << " " << v[a];
+    os << ")";
     return os.str();
 }
 
-bool finite(const Vector2& v) { return std::isfinite(v.x()) && std::isfinite(v.y()); }
+template <class Vector> bool finite(const Vector& v) { return v.allFinite(); }
 
 //- Fewer particles (or nodes) than this are checked on one thread.
 constexpr long long parallelFrom = 20000;
 } // namespace
 
-StabilityGuard::StabilityGuard(const StabilitySettings& settings, const MpmSolver<2>& solver,
-                               std::vector<std::string> bodyNames, const Vector2& gravity, bool hasLoads,
+template <int D>
+StabilityGuard<D>::StabilityGuard(const StabilitySettings& settings, const MpmSolver<D>& solver,
+                               std::vector<std::string> bodyNames, const Vector& gravity, bool hasLoads,
                                std::string snapshotFile)
     : solver_(solver), bodyNames_(std::move(bodyNames)), gravity_(gravity), hasLoads_(hasLoads),
       snapshotInterval_(settings.snapshotInterval), maxEnergyGain_(settings.maxEnergyGain),
@@ -42,18 +45,20 @@ StabilityGuard::StabilityGuard(const StabilitySettings& settings, const MpmSolve
     }
 }
 
-bool StabilityGuard::isRigid(std::size_t q) const
+template <int D>
+bool StabilityGuard<D>::isRigid(std::size_t q) const
 {
     const int b = solver_.particles().body[q];
     return anyRigid_ && b >= 0 && b < static_cast<int>(rigid_.size()) && rigid_[b];
 }
 
-StabilityGuard::Survey StabilityGuard::survey() const
+template <int D>
+typename StabilityGuard<D>::Survey StabilityGuard<D>::survey() const
 {
-    const Particles<2>& p = solver_.particles();
+    const Particles<D>& p = solver_.particles();
     const std::size_t n = p.size();
-    const Vector2 lo = solver_.grid().origin(), hi = solver_.grid().upper();
-    const Vector2 g = gravity_;
+    const Vector lo = solver_.grid().origin(), hi = solver_.grid().upper();
+    const Vector g = gravity_;
     // Rigid particles (driven) carry no energy of the material.
     const char* rigidBody = anyRigid_ ? rigid_.data() : nullptr;
     const int bodies = static_cast<int>(rigid_.size());
@@ -68,14 +73,14 @@ StabilityGuard::Survey StabilityGuard::survey() const
     reduction(+ : kinetic, work, gravity) reduction(max : speed2)
     for (long long i = 0; i < count; ++i) {
         const auto q = static_cast<std::size_t>(i);
-        const Vector2& x = p.x[q];
-        const Vector2& v = p.v[q];
+        const Vector& x = p.x[q];
+        const Vector& v = p.v[q];
         // One sum is finite only when every term is.
-        const double all = x.x() + x.y() + v.x() + v.y() + p.sigma[q].sum() + p.V[q];
+        const double all = x.sum() + v.sum() + p.sigma[q].sum() + p.V[q];
         if (!std::isfinite(all) || !(p.V[q] > 0.0)) invalid = std::min(invalid, q);
         // The test of Grid::contains, so that the guard fails where computeWeights would. The
         // solver has removed the particles that left through an outlet by now.
-        if (x.x() < lo.x() || x.x() > hi.x() || x.y() < lo.y() || x.y() > hi.y()) outside = std::min(outside, q);
+        if ((x.array() < lo.array()).any() || (x.array() > hi.array()).any()) outside = std::min(outside, q);
         const double v2 = v.squaredNorm();
         speed2 = std::max(speed2, v2);
         if (!rigidBody || p.body[q] >= bodies || !rigidBody[p.body[q]]) {
@@ -96,38 +101,41 @@ StabilityGuard::Survey StabilityGuard::survey() const
     return s;
 }
 
-double StabilityGuard::loadWork(double dt) const
+template <int D>
+double StabilityGuard<D>::loadWork(double dt) const
 {
     if (!hasLoads_) return 0.0;
     // The loads are the external nodal force less the weight m_i g; their power on the nodal
     // velocity at mid-step, v_i^{t+1} - dt a_i / 2.
-    const Grid<2>& grid = solver_.grid();
-    const Vector2 g = gravity_;
+    const Grid<D>& grid = solver_.grid();
+    const Vector g = gravity_;
     const long long count = static_cast<long long>(grid.active.size());
     double w = 0;
 #pragma omp parallel for if (count > parallelFrom) schedule(static) reduction(+ : w)
     for (long long k = 0; k < count; ++k) {
         const auto n = static_cast<std::size_t>(grid.active[static_cast<std::size_t>(k)]);
-        const Vector2 load = grid.fExt[n] - grid.mass[n] * g;
+        const Vector load = grid.fExt[n] - grid.mass[n] * g;
         w += load.dot(grid.velocity[n] - 0.5 * dt * grid.accel[n]);
     }
     return dt * w;
 }
 
-double StabilityGuard::rigidWork(double t, double dt) const
+template <int D>
+double StabilityGuard<D>::rigidWork(double t, double dt) const
 {
     if (!anyRigid_) return 0.0;
     const auto& loads = solver_.rigidBodyLoads();
     double w = 0;
     const double tMid = t - 0.5 * dt;
     for (std::size_t b = 0; b < rigid_.size() && b < loads.size(); ++b) {
-        const RigidBodyDriver<2>* driver = solver_.rigidBody(static_cast<int>(b));
+        const RigidBodyDriver<D>* driver = solver_.rigidBody(static_cast<int>(b));
         if (rigid_[b] && driver) w += powerOnMaterial(*driver, loads[b], tMid);
     }
     return dt * w;
 }
 
-void StabilityGuard::start(double t, long step, const std::string& onDisk)
+template <int D>
+void StabilityGuard<D>::start(double t, long step, const std::string& onDisk)
 {
     const Survey s = survey();
     kinetic0_ = lastKinetic_ = s.kinetic;
@@ -140,7 +148,7 @@ void StabilityGuard::start(double t, long step, const std::string& onDisk)
     particleCount_ = solver_.particles().size();
     // Elastic energy held at the start (an initial or restarted stress): sum V |sigma|^2 /
     // (2 rho c^2), rho c^2 the P-wave modulus; a scale, not an exact value.
-    const Particles<2>& p = solver_.particles();
+    const Particles<D>& p = solver_.particles();
     std::vector<double> compliance;
     for (const auto& m : solver_.materials()) {
         const double c = m->waveSpeed();
@@ -167,17 +175,20 @@ void StabilityGuard::start(double t, long step, const std::string& onDisk)
         stateWritten(onDisk, t, step, 0.0);
 }
 
-void StabilityGuard::restartEnergyAccount() { restartPending_ = true; }
+template <int D>
+void StabilityGuard<D>::restartEnergyAccount() { restartPending_ = true; }
 
-Particles<2> GoodState::particles() const
+template <int D>
+Particles<D> GoodState<D>::particles() const
 {
-    Particles<2> p;
+    Particles<D> p;
     double t = 0;
     readParticles(file, p, t);
     return p;
 }
 
-void StabilityGuard::keep(double t, long step, double dt)
+template <int D>
+void StabilityGuard<D>::keep(double t, long step, double dt)
 {
     const auto begin = std::chrono::steady_clock::now();
     std::vector<std::string> materialNames;
@@ -188,18 +199,21 @@ void StabilityGuard::keep(double t, long step, double dt)
     snapshotSeconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
 }
 
-void StabilityGuard::keepIfDue(double t, long step, double dt)
+template <int D>
+void StabilityGuard<D>::keepIfDue(double t, long step, double dt)
 {
     if (step - lastGood_.step >= snapshotInterval_) keep(t, step, dt);
 }
 
-void StabilityGuard::stateWritten(const std::string& file, double t, long step, double dt)
+template <int D>
+void StabilityGuard<D>::stateWritten(const std::string& file, double t, long step, double dt)
 {
     lastGood_ = {file, t, step, dt, solver_.removedMass()};
     ++snapshots_;
 }
 
-std::optional<StabilityTrip> StabilityGuard::check(double t, long step, double dt)
+template <int D>
+std::optional<StabilityTrip> StabilityGuard<D>::check(double t, long step, double dt)
 {
     const Survey s = survey();
     lastKinetic_ = s.kinetic;
@@ -247,7 +261,7 @@ std::optional<StabilityTrip> StabilityGuard::check(double t, long step, double d
     if (energyChecked_) largestGain_ = std::max(largestGain_, gain);
     if (energyChecked_ && !(gain <= maxEnergyGain_)) {
         // Blame the particle with the most kinetic energy.
-        const Particles<2>& p = solver_.particles();
+        const Particles<D>& p = solver_.particles();
         std::size_t worst = 0;
         double most = -1;
         for (std::size_t q = 0; q < n; ++q) {
@@ -262,7 +276,7 @@ std::optional<StabilityTrip> StabilityGuard::check(double t, long step, double d
         // A step inside the estimate that still grows energy: either a mode the estimate
         // misses or a growth that is not the step's (doc/stability.md).
         // Within 1 %: the particle's speed, and with it the limit, has moved since the step began.
-        const Vector2& v = p.v[worst];
+        const Vector& v = p.v[worst];
         const std::string within = finite(v) && dt <= 1.01 * neededStep(worst, v)
                                        ? "; the step met that estimate: run again with a smaller maxCourant (or "
                                          "deltaT); a growth that comes at the same time is not the step's"
@@ -272,7 +286,7 @@ std::optional<StabilityTrip> StabilityGuard::check(double t, long step, double d
 
     if (aboveLimit) {
         // Blame the fastest particle: its speed set the limit.
-        const Particles<2>& p = solver_.particles();
+        const Particles<D>& p = solver_.particles();
         std::size_t fastest = 0;
         for (std::size_t q = 0; q < n; ++q)
             if (p.v[q].squaredNorm() == s.speed2) {
@@ -285,7 +299,8 @@ std::optional<StabilityTrip> StabilityGuard::check(double t, long step, double d
     return std::nullopt;
 }
 
-std::optional<StabilityTrip> StabilityGuard::diagnose(double t, long step, double dt) const
+template <int D>
+std::optional<StabilityTrip> StabilityGuard<D>::diagnose(double t, long step, double dt) const
 {
     const Survey s = survey();
     const std::size_t n = solver_.particles().size();
@@ -294,29 +309,32 @@ std::optional<StabilityTrip> StabilityGuard::diagnose(double t, long step, doubl
     return std::nullopt;
 }
 
-double StabilityGuard::neededStep(std::size_t q, const Vector2& v) const
+template <int D>
+double StabilityGuard<D>::neededStep(std::size_t q, const Vector& v) const
 {
-    const Particles<2>& p = solver_.particles();
+    const Particles<D>& p = solver_.particles();
     const double c = isRigid(q) ? 0.0 : solver_.waveSpeed(static_cast<std::size_t>(p.material[q]));
     return std::min(courant_ * solver_.stepLength() / (c + v.norm()), courant_ * rotationStep(q));
 }
 
-double StabilityGuard::rotationStep(std::size_t q) const
+template <int D>
+double StabilityGuard<D>::rotationStep(std::size_t q) const
 {
     return isRigid(q) ? 1e300 : solver_.passTimeStep(static_cast<std::size_t>(solver_.particles().material[q]));
 }
 
-std::string StabilityGuard::describe(const std::string& what, std::size_t q, double t, long step, double dt) const
+template <int D>
+std::string StabilityGuard<D>::describe(const std::string& what, std::size_t q, double t, long step, double dt) const
 {
-    const Particles<2>& p = solver_.particles();
+    const Particles<D>& p = solver_.particles();
     const int b = p.body[q];
     const std::string body = b >= 0 && b < static_cast<int>(bodyNames_.size()) ? bodyNames_[b] : std::to_string(b);
     const auto& material = *solver_.materials()[static_cast<std::size_t>(p.material[q])];
     // A non-finite velocity says nothing of the speed: use the particle's last good one.
-    Vector2 v = p.v[q];
+    Vector v = p.v[q];
     std::string speedNote;
     if (!finite(v)) try {
-        const Particles<2> good = lastGood_.particles();
+        const Particles<D> good = lastGood_.particles();
         const auto at = std::find(good.id.begin(), good.id.end(), p.id[q]);
         if (at != good.id.end()) {
             v = good.v[static_cast<std::size_t>(at - good.id.begin())];
@@ -340,11 +358,12 @@ std::string StabilityGuard::describe(const std::string& what, std::size_t q, dou
     return os.str();
 }
 
-std::string StabilityGuard::describeInvalid(std::size_t first, double t, long step, double dt) const
+template <int D>
+std::string StabilityGuard<D>::describeInvalid(std::size_t first, double t, long step, double dt) const
 {
     // Blame the source: a non-finite stress spreads to the velocities and positions of its
     // neighbours within a step, so look for the first of each kind in that order.
-    const Particles<2>& p = solver_.particles();
+    const Particles<D>& p = solver_.particles();
     const std::pair<const char*, std::function<bool(std::size_t)>> kinds[] = {
         {"non-finite stress", [&](std::size_t q) { return !p.sigma[q].allFinite(); }},
         {"non-finite volume", [&](std::size_t q) { return !std::isfinite(p.V[q]); }},
@@ -359,22 +378,28 @@ std::string StabilityGuard::describeInvalid(std::size_t first, double t, long st
     return describe(what.str(), first, t, step, dt);
 }
 
-std::string StabilityGuard::describeOutside(std::size_t q, double t, long step, double dt) const
+template <int D>
+std::string StabilityGuard<D>::describeOutside(std::size_t q, double t, long step, double dt) const
 {
-    const Grid<2>& grid = solver_.grid();
-    const Vector2& x = solver_.particles().x[q];
+    const Grid<D>& grid = solver_.grid();
+    const Vector& x = solver_.particles().x[q];
     std::string sides;
     const auto add = [&](bool beyond, GridSide side) {
         if (beyond) sides += (sides.empty() ? "" : " and ") + gridSideNames()[static_cast<int>(side)];
     };
-    add(x.x() < grid.origin().x(), GridSide::left);
-    add(x.x() > grid.upper().x(), GridSide::right);
-    add(x.y() < grid.origin().y(), GridSide::bottom);
-    add(x.y() > grid.upper().y(), GridSide::top);
+    for (int a = 0; a < D; ++a) {
+        add(x[a] < grid.origin()[a], static_cast<GridSide>(2 * a));
+        add(x[a] > grid.upper()[a], static_cast<GridSide>(2 * a + 1));
+    }
     std::ostringstream what;
     what << "particle outside the grid " << str(grid.origin()) << " - " << str(grid.upper()) << ", beyond its "
          << sides << " side, where no outflow removes it";
     return describe(what.str(), q, t, step, dt);
 }
+
+template class StabilityGuard<2>;
+template class StabilityGuard<3>;
+template struct GoodState<2>;
+template struct GoodState<3>;
 
 } // namespace gpic

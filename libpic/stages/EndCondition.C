@@ -23,7 +23,8 @@ std::string brief(double v)
 }
 } // namespace
 
-EndCondition::EndCondition(const Dictionary& stage, const std::vector<std::string>& bodyNames, int defaultBody)
+template <int D>
+EndCondition<D>::EndCondition(const Dictionary& stage, const std::vector<std::string>& bodyNames, int defaultBody)
     : body_(defaultBody)
 {
     if (!stage.isDict("until"))
@@ -60,42 +61,47 @@ EndCondition::EndCondition(const Dictionary& stage, const std::vector<std::strin
     until.warnUnused();
 }
 
-const std::string& EndCondition::kindName() const
+template <int D>
+const std::string& EndCondition<D>::kindName() const
 {
     static const std::string names[] = {kindNames[0], kindNames[1], kindNames[2], kindNames[3]};
     return names[static_cast<int>(kind_)];
 }
 
-double EndCondition::maxSpeed(const MpmSolver<2>& solver)
+template <int D>
+double EndCondition<D>::maxSpeed(const MpmSolver<D>& solver)
 {
-    const Particles<2>& p = solver.particles();
+    const Particles<D>& p = solver.particles();
     double v2 = 0;
     for (std::size_t q = 0; q < p.size(); ++q)
         if (!solver.rigidBody(p.body[q])) v2 = std::max(v2, p.v[q].squaredNorm());
     return std::sqrt(v2);
 }
 
-Vector2 EndCondition::centreOf(const MpmSolver<2>& solver, int b)
+template <int D>
+typename Space<D>::Vector EndCondition<D>::centreOf(const MpmSolver<D>& solver, int b)
 {
-    const Particles<2>& p = solver.particles();
+    const Particles<D>& p = solver.particles();
     double m = 0;
-    Vector2 c = Vector2::Zero();
+    Vector c = Vector::Zero();
     for (std::size_t q = 0; q < p.size(); ++q)
         if (p.body[q] == b) {
             m += p.m[q];
             c += p.m[q] * p.x[q];
         }
-    return m > 0 ? Vector2(c / m) : c;
+    return m > 0 ? Vector(c / m) : c;
 }
 
-void EndCondition::start(const MpmSolver<2>& solver, double t, long step)
+template <int D>
+void EndCondition<D>::start(const MpmSolver<D>& solver, double t, long step)
 {
     tStart_ = t;
     stepStart_ = step;
     if (kind_ == Kind::displacement) centre0_ = centreOf(solver, body_);
 }
 
-double EndCondition::landOn() const
+template <int D>
+double EndCondition<D>::landOn() const
 {
     double t = std::numeric_limits<double>::infinity();
     if (kind_ == Kind::endTime) t = value_;
@@ -104,7 +110,8 @@ double EndCondition::landOn() const
     return t;
 }
 
-bool EndCondition::reached(const MpmSolver<2>& solver, double t, long step, double dt, std::string& reason,
+template <int D>
+bool EndCondition<D>::reached(const MpmSolver<D>& solver, double t, long step, double dt, std::string& reason,
                            bool& timedOut) const
 {
     timedOut = false;
@@ -151,18 +158,23 @@ bool EndCondition::reached(const MpmSolver<2>& solver, double t, long step, doub
     return false;
 }
 
-void EndCondition::writeProgress(std::ostream& os, const std::string& indent) const
+template <int D>
+void EndCondition<D>::writeProgress(std::ostream& os, const std::string& indent) const
 {
     os << indent << "startTime " << exactNumber(tStart_) << ";\n"
        << indent << "startStep " << stepStart_ << ";\n"
        << indent << "centre (" << exactNumber(centre0_.x()) << " " << exactNumber(centre0_.y()) << ");\n";
 }
 
-void EndCondition::readProgress(const Dictionary& d)
+template <int D>
+void EndCondition<D>::readProgress(const Dictionary& d)
 {
     tStart_ = d.get<double>("startTime");
     stepStart_ = d.get<long>("startStep");
-    centre0_ = d.get<Vector2>("centre");
+    centre0_ = d.get<Vector>("centre");
 }
+
+template class EndCondition<2>;
+template class EndCondition<3>;
 
 } // namespace gpic

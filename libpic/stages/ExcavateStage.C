@@ -14,11 +14,12 @@
 
 namespace gpic {
 
-GPIC_REGISTER(Stage, ExcavateStage, "excavate")
+GPIC_REGISTER_DIMS(Stage, ExcavateStage, "excavate")
 
-ExcavateStage::ExcavateStage(const Dictionary& dict, const StageSetup& setup) : Stage(dict, setup, 0.8)
+template <int D>
+ExcavateStage<D>::ExcavateStage(const Dictionary& dict, const StageSetup<D>& setup) : Stage<D>(dict, setup, 0.8)
 {
-    if (until().kind() != EndCondition::Kind::equilibrium)
+    if (until().kind() != EndCondition<D>::Kind::equilibrium)
         dict.fail("until", "excavate brings the soil to equilibrium after each layer: until { equilibrium 1e-6; } "
                            "(optionally maxTime, minSteps), not " + until().kindName());
     const std::string name = dict.get<std::string>("body");
@@ -27,12 +28,12 @@ ExcavateStage::ExcavateStage(const Dictionary& dict, const StageSetup& setup) : 
     if (dict.found("region") == dict.found("regions"))
         dict.fail("region", "excavate needs exactly one of region { type rectangle; min (..); max (..); } and "
                             "regions { a { ... } b { ... } } in dictionary " + dict.name());
-    if (dict.found("region")) regions_.push_back(Shape::New(dict.subDict("region")));
+    if (dict.found("region")) regions_.push_back(Shape<D>::New(dict.subDict("region")));
     else {
         const Dictionary& all = dict.subDict("regions");
         for (const auto& key : all.keys()) {
             if (!all.isDict(key)) all.fail(key, "'" + key + "' needs a shape sub-dictionary { type rectangle; ... }");
-            regions_.push_back(Shape::New(all.subDict(key)));
+            regions_.push_back(Shape<D>::New(all.subDict(key)));
         }
         if (regions_.empty()) all.fail("", "regions holds no shape");
     }
@@ -41,7 +42,8 @@ ExcavateStage::ExcavateStage(const Dictionary& dict, const StageSetup& setup) : 
                      : setup.cellHeight;
 }
 
-bool ExcavateStage::inRegion(const Particles<2>& p, std::size_t q) const
+template <int D>
+bool ExcavateStage<D>::inRegion(const Particles<D>& p, std::size_t q) const
 {
     if (p.body[q] != body_) return false;
     for (const auto& r : regions_)
@@ -49,39 +51,42 @@ bool ExcavateStage::inRegion(const Particles<2>& p, std::size_t q) const
     return false;
 }
 
-bool ExcavateStage::digLayer(MpmSolver<2>& solver, ParticlePool& pool, double t, long step)
+template <int D>
+bool ExcavateStage<D>::digLayer(MpmSolver<D>& solver, ParticlePool<D>& pool, double t, long step)
 {
-    const Particles<2>& p = solver.particles();
+    const Particles<D>& p = solver.particles();
     double highest = -std::numeric_limits<double>::infinity();
     for (std::size_t q = 0; q < p.size(); ++q)
-        if (inRegion(p, q)) highest = std::max(highest, p.x[q].y());
+        if (inRegion(p, q)) highest = std::max(highest, p.x[q][D - 1]);
     if (highest == -std::numeric_limits<double>::infinity()) return false;
     // The band of the highest particle left: bands of layerThickness down from the top.
     band_ = std::max(band_ + 1, static_cast<long>(std::floor((top_ - highest) / thickness_ + 1e-9)));
     const double bottom = top_ - (band_ + 1) * thickness_;
     std::size_t count = 0;
     const double mass = pool.remove(
-        solver, [&](const Particles<2>& s, std::size_t q) { return inRegion(s, q) && s.x[q].y() >= bottom; }, &count);
+        solver, [&](const Particles<D>& s, std::size_t q) { return inRegion(s, q) && s.x[q][D - 1] >= bottom; }, &count);
     removed_ += mass;
     ++layers_;
     until().start(solver, t, step);
     info() << "Stage " << name() << ": layer " << layers_ << " dug, " << count << " particles (" << mass
-           << " kg/m) above x2 = " << bottom << " m, t = " << t << " s\n";
+           << (D == 2 ? " kg/m) above x2 = " : " kg) above x3 = ") << bottom << " m, t = " << t << " s\n";
     return true;
 }
 
-StageEvent ExcavateStage::started(MpmSolver<2>& solver, ParticlePool& pool, double t, long step)
+template <int D>
+StageEvent ExcavateStage<D>::started(MpmSolver<D>& solver, ParticlePool<D>& pool, double t, long step)
 {
-    const Particles<2>& p = solver.particles();
+    const Particles<D>& p = solver.particles();
     top_ = -std::numeric_limits<double>::infinity();
     for (std::size_t q = 0; q < p.size(); ++q)
-        if (inRegion(p, q)) top_ = std::max(top_, p.x[q].y() + p.halfSize[q].y());
+        if (inRegion(p, q)) top_ = std::max(top_, p.x[q][D - 1] + p.halfSize[q][D - 1]);
     if (top_ == -std::numeric_limits<double>::infinity()) return end("nothing to dig in the region");
     if (!digLayer(solver, pool, t, step)) return end("nothing to dig in the region");
     return StageEvent::particlesChanged;
 }
 
-StageEvent ExcavateStage::afterStep(MpmSolver<2>& solver, ParticlePool& pool, double t, long step, double dt)
+template <int D>
+StageEvent ExcavateStage<D>::afterStep(MpmSolver<D>& solver, ParticlePool<D>& pool, double t, long step, double dt)
 {
     std::string why;
     bool timedOut = false;
@@ -91,26 +96,33 @@ StageEvent ExcavateStage::afterStep(MpmSolver<2>& solver, ParticlePool& pool, do
     return end(why, timedOut);
 }
 
-std::string ExcavateStage::summary() const
+template <int D>
+std::string ExcavateStage<D>::summary() const
 {
     char mass[32];
     std::snprintf(mass, sizeof mass, "%.4g", removed_);
-    return " after " + std::to_string(layers_) + (layers_ == 1 ? " layer" : " layers") + " (" + mass + " kg/m dug)";
+    return " after " + std::to_string(layers_) + (layers_ == 1 ? " layer" : " layers") + " (" + mass + (D == 2 ? " kg/m dug)" : " kg dug)");
 }
 
-void ExcavateStage::writeOwnProgress(std::ostream& os) const
+template <int D>
+void ExcavateStage<D>::writeOwnProgress(std::ostream& os) const
 {
     char buf[96];
     std::snprintf(buf, sizeof buf, "    top %.17g;\n    removed %.17g;\n", top_, removed_);
     os << buf << "    band " << band_ << ";\n    layers " << layers_ << ";\n";
 }
 
-void ExcavateStage::readOwnProgress(const Dictionary& progress)
+template <int D>
+void ExcavateStage<D>::readOwnProgress(const Dictionary& progress)
 {
     top_ = progress.get<double>("top");
     removed_ = progress.get<double>("removed");
     band_ = progress.get<long>("band");
     layers_ = progress.get<long>("layers");
 }
+
+template class ExcavateStage<2>;
+template class ExcavateStage<3>;
+
 
 } // namespace gpic

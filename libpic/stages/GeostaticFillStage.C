@@ -13,12 +13,13 @@
 
 namespace gpic {
 
-GPIC_REGISTER(Stage, GeostaticFillStage, "geostaticFill")
+GPIC_REGISTER_DIMS(Stage, GeostaticFillStage, "geostaticFill")
 
-GeostaticFillStage::GeostaticFillStage(const Dictionary& dict, const StageSetup& setup)
-    : Stage(dict, setup, 0.8)
+template <int D>
+GeostaticFillStage<D>::GeostaticFillStage(const Dictionary& dict, const StageSetup<D>& setup)
+    : Stage<D>(dict, setup, 0.8)
 {
-    if (until().kind() != EndCondition::Kind::equilibrium)
+    if (until().kind() != EndCondition<D>::Kind::equilibrium)
         dict.fail("until", "geostaticFill brings each layer to equilibrium: until { equilibrium 1e-6; } "
                            "(optionally maxTime, minSteps), not " + until().kindName());
     const std::size_t nBodies = setup.bodyNames.size();
@@ -51,37 +52,44 @@ GeostaticFillStage::GeostaticFillStage(const Dictionary& dict, const StageSetup&
                                                  "0 <= phi < 90 (degrees)"));
 }
 
-Vector2 GeostaticFillStage::up() const
+template <int D>
+typename Space<D>::Vector GeostaticFillStage<D>::up() const
 {
-    const Vector2 g = gravity();
-    return g.norm() > 0 ? Vector2(-g / g.norm()) : Vector2(0.0, 1.0);
+    const Vector g = gravity();
+    return g.norm() > 0 ? Vector(-g / g.norm()) : Vector(Vector::Unit(D - 1));
 }
 
-bool GeostaticFillStage::addLayer(MpmSolver<2>& solver, ParticlePool& pool, double t, long step)
+template <int D>
+bool GeostaticFillStage<D>::addLayer(MpmSolver<D>& solver, ParticlePool<D>& pool, double t, long step)
 {
     // Heights and depths are measured against gravity, so a scene turned on the grid (gravity
     // not along -x2, seed fig. 6.19) fills in layers normal to gravity, as the seed's upright
     // one does; with gravity along -x2 the height is x2.
-    const Vector2 u = up();
-    const auto height = [&](const Particles<2>& p, std::size_t q) { return p.x[q].dot(u); };
-    const Particles<2>& sleeping = pool.dormant();
-    const auto waiting = [&](const Particles<2>& p, std::size_t q) { return fills(p.body[q]) && height(p, q) < upTo_; };
+    const Vector u = up();
+    const auto height = [&](const Particles<D>& p, std::size_t q) { return p.x[q].dot(u); };
+    const Particles<D>& sleeping = pool.dormant();
+    const auto waiting = [&](const Particles<D>& p, std::size_t q) { return fills(p.body[q]) && height(p, q) < upTo_; };
     double lowest = std::numeric_limits<double>::infinity();
     for (std::size_t q = 0; q < sleeping.size(); ++q)
         if (waiting(sleeping, q)) lowest = std::min(lowest, height(sleeping, q));
     if (!std::isfinite(lowest)) return false;
     // The band of the lowest waiting particle: bands of layerThickness from the grid's lowest corner.
-    const Vector2 &lo = setup().gridMin, &hi = setup().gridMax;
-    const double y0 = std::min({lo.dot(u), Vector2(hi.x(), lo.y()).dot(u), Vector2(lo.x(), hi.y()).dot(u), hi.dot(u)});
+    const Vector &lo = setup().gridMin, &hi = setup().gridMax;
+    double y0 = 0;
+    if constexpr (D == 2) {
+        y0 = std::min({lo.dot(u), Vector(hi.x(), lo.y()).dot(u), Vector(lo.x(), hi.y()).dot(u), hi.dot(u)});
+    } else {  // the lowest corner: the lower end along each axis
+        for (int a = 0; a < D; ++a) y0 += std::min(lo[a] * u[a], hi[a] * u[a]);
+    }
     band_ = std::max(band_ + 1, static_cast<long>(std::floor((lowest - y0) / thickness_ + 1e-9)));
     const double top = y0 + (band_ + 1) * thickness_;
     const double g = gravity().norm();
     double surface = -std::numeric_limits<double>::infinity();
     std::size_t count = 0;
     pool.exchange(
-        solver, [](const Particles<2>&, std::size_t) { return false; },
-        [&](const Particles<2>& p, std::size_t q) { return waiting(p, q) && height(p, q) < top; },
-        [&](Particles<2>& p, std::size_t begin, std::size_t end) {
+        solver, [](const Particles<D>&, std::size_t) { return false; },
+        [&](const Particles<D>& p, std::size_t q) { return waiting(p, q) && height(p, q) < top; },
+        [&](Particles<D>& p, std::size_t begin, std::size_t end) {
             // The free surface of the new layer: the top of its particles' domains.
             for (std::size_t q = begin; q < end; ++q)
                 surface = std::max(surface, height(p, q) + p.halfSize[q].cwiseProduct(u).cwiseAbs().sum());
@@ -90,31 +98,39 @@ bool GeostaticFillStage::addLayer(MpmSolver<2>& solver, ParticlePool& pool, doub
                 const double sV = -rho * g * std::max(0.0, surface - height(p, q));  // eq. 3.3.4, along gravity
                 // K0 sV across gravity and out of plane, sV along it: K0 sV I + (1 - K0) sV u u^T.
                 const double sUU = (1.0 - K0_) * sV;
-                p.sigma[q] = SymTensor(K0_ * sV + sUU * u.x() * u.x(), K0_ * sV + sUU * u.y() * u.y(), K0_ * sV,
-                                       sUU * u.x() * u.y());
-                p.v[q].setZero();
-                if (p.carries(FieldGroup::polar)) {  // no couple stress, sigma21 = sigma12 (eq. 3.3.4)
-                    p.polar.sigma21[q] = p.sigma[q][XY];
-                    p.polar.mu[q].setZero();
-                    p.polar.omega[q] = 0.0;
+                if constexpr (D == 2) {
+                    p.sigma[q] = SymTensor(K0_ * sV + sUU * u.x() * u.x(), K0_ * sV + sUU * u.y() * u.y(), K0_ * sV,
+                                           sUU * u.x() * u.y());
+                    if (p.carries(FieldGroup::polar)) {  // no couple stress, sigma21 = sigma12 (eq. 3.3.4)
+                        p.polar.sigma21[q] = p.sigma[q][XY];
+                        p.polar.mu[q].setZero();
+                        p.polar.omega[q] = 0.0;
+                    }
+                } else {
+                    SymTensor& s = p.sigma[q];
+                    s << K0_ * sV + sUU * u.x() * u.x(), K0_ * sV + sUU * u.y() * u.y(), K0_ * sV + sUU * u.z() * u.z(),
+                        sUU * u.x() * u.y(), sUU * u.y() * u.z(), sUU * u.x() * u.z();
                 }
+                p.v[q].setZero();
             }
             count = end - begin;
         });
     ++layers_;
     until().start(solver, t, step);
     info() << "Stage " << name() << ": layer " << layers_ << ", " << count << " particles up to "
-           << (u.x() == 0.0 ? "x2" : "height") << " = " << surface << " m, t = " << t << " s\n";
+           << (D == 2 && u.x() == 0.0 ? "x2" : D == 3 && u.x() == 0.0 && u.y() == 0.0 ? "x3" : "height") << " = " << surface << " m, t = " << t << " s\n";
     return true;
 }
 
-StageEvent GeostaticFillStage::started(MpmSolver<2>& solver, ParticlePool& pool, double t, long step)
+template <int D>
+StageEvent GeostaticFillStage<D>::started(MpmSolver<D>& solver, ParticlePool<D>& pool, double t, long step)
 {
     if (!addLayer(solver, pool, t, step)) return end("nothing left to fill");
     return StageEvent::particlesChanged;
 }
 
-StageEvent GeostaticFillStage::afterStep(MpmSolver<2>& solver, ParticlePool& pool, double t, long step, double dt)
+template <int D>
+StageEvent GeostaticFillStage<D>::afterStep(MpmSolver<D>& solver, ParticlePool<D>& pool, double t, long step, double dt)
 {
     std::string why;
     bool timedOut = false;
@@ -124,20 +140,26 @@ StageEvent GeostaticFillStage::afterStep(MpmSolver<2>& solver, ParticlePool& poo
     return end(why, timedOut);
 }
 
-std::string GeostaticFillStage::summary() const
+template <int D>
+std::string GeostaticFillStage<D>::summary() const
 {
     return " after " + std::to_string(layers_) + (layers_ == 1 ? " layer" : " layers");
 }
 
-void GeostaticFillStage::writeOwnProgress(std::ostream& os) const
+template <int D>
+void GeostaticFillStage<D>::writeOwnProgress(std::ostream& os) const
 {
     os << "    band " << band_ << ";\n    layers " << layers_ << ";\n";
 }
 
-void GeostaticFillStage::readOwnProgress(const Dictionary& progress)
+template <int D>
+void GeostaticFillStage<D>::readOwnProgress(const Dictionary& progress)
 {
     band_ = progress.get<long>("band");
     layers_ = progress.get<long>("layers");
 }
+
+template class GeostaticFillStage<2>;
+template class GeostaticFillStage<3>;
 
 } // namespace gpic

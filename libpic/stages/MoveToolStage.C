@@ -6,9 +6,10 @@
 
 namespace gpic {
 
-GPIC_REGISTER(Stage, MoveToolStage, "moveTool")
+GPIC_REGISTER_DIMS(Stage, MoveToolStage, "moveTool")
 
-int MoveToolStage::toolOf(const Dictionary& dict, const StageSetup& setup)
+template <int D>
+int MoveToolStage<D>::toolOf(const Dictionary& dict, const StageSetup<D>& setup)
 {
     const auto& names = setup.bodyNames;
     const std::string tool = dict.get<std::string>("body");
@@ -21,8 +22,9 @@ int MoveToolStage::toolOf(const Dictionary& dict, const StageSetup& setup)
     return static_cast<int>(it - names.begin());
 }
 
-MoveToolStage::MoveToolStage(const Dictionary& dict, const StageSetup& setup)
-    : Stage(dict, setup, 0.0, toolOf(dict, setup))
+template <int D>
+MoveToolStage<D>::MoveToolStage(const Dictionary& dict, const StageSetup<D>& setup)
+    : Stage<D>(dict, setup, 0.0, toolOf(dict, setup))
 {
     const std::string tool = dict.get<std::string>("body");
     const int b = toolOf(dict, setup);
@@ -31,5 +33,8 @@ MoveToolStage::MoveToolStage(const Dictionary& dict, const StageSetup& setup)
         dict.fail("body", "the tool '" + tool + "' has no driver: give it one in constant/rigidBodies or in the "
                           "stage's drivers { " + tool + " { type prescribedVelocity; velocity (0.01 0); } }");
 }
+
+template class MoveToolStage<2>;
+template class MoveToolStage<3>;
 
 } // namespace gpic

@@ -4,11 +4,15 @@
 
 namespace gpic {
 
-GPIC_REGISTER(Stage, OpenGateStage, "openGate")
+GPIC_REGISTER_DIMS(Stage, OpenGateStage, "openGate")
 
-OpenGateStage::OpenGateStage(const Dictionary& dict, const StageSetup& setup) : Stage(dict, setup)
+template <int D>
+OpenGateStage<D>::OpenGateStage(const Dictionary& dict, const StageSetup<D>& setup) : Stage<D>(dict, setup)
 {
     setOpening(dict, "side", dict.get<std::string>("side"), 1);
 }
+
+template class OpenGateStage<2>;
+template class OpenGateStage<3>;
 
 } // namespace gpic

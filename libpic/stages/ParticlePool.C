@@ -7,27 +7,28 @@
 
 namespace gpic {
 
-Particles<2> selectParticles(const Particles<2>& from, const std::vector<std::size_t>& which)
+template <int D> Particles<D> selectParticles(const Particles<D>& from, const std::vector<std::size_t>& which)
 {
-    Particles<2> out = from;
+    Particles<D> out = from;
     out.reorder(which);
     return out;
 }
 
-bool ParticlePool::exchange(MpmSolver<2>& solver, const Predicate& sleep, const Predicate& wake, const OnWake& onWake)
+template <int D>
+bool ParticlePool<D>::exchange(MpmSolver<D>& solver, const Predicate& sleep, const Predicate& wake, const OnWake& onWake)
 {
-    const Particles<2>& active = solver.particles();
+    const Particles<D>& active = solver.particles();
     std::vector<std::size_t> keep, asleep, woken, stay;
     for (std::size_t q = 0; q < active.size(); ++q) (sleep(active, q) ? asleep : keep).push_back(q);
     for (std::size_t q = 0; q < dormant_.size(); ++q) (wake(dormant_, q) ? woken : stay).push_back(q);
     if (asleep.empty() && woken.empty()) return false;
 
-    Particles<2> next = selectParticles(active, keep);
+    Particles<D> next = selectParticles(active, keep);
     const std::size_t begin = next.size();
     next.append(selectParticles(dormant_, woken));
     if (onWake) onWake(next, begin, next.size());
 
-    Particles<2> pool = selectParticles(dormant_, stay);
+    Particles<D> pool = selectParticles(dormant_, stay);
     pool.append(selectParticles(active, asleep));
     std::vector<std::size_t> byId(pool.size());
     std::iota(byId.begin(), byId.end(), std::size_t(0));
@@ -38,9 +39,10 @@ bool ParticlePool::exchange(MpmSolver<2>& solver, const Predicate& sleep, const 
     return true;
 }
 
-double ParticlePool::remove(MpmSolver<2>& solver, const Predicate& remove, std::size_t* count)
+template <int D>
+double ParticlePool<D>::remove(MpmSolver<D>& solver, const Predicate& remove, std::size_t* count)
 {
-    const Particles<2>& active = solver.particles();
+    const Particles<D>& active = solver.particles();
     std::vector<std::size_t> keep;
     double mass = 0;
     for (std::size_t q = 0; q < active.size(); ++q) {
@@ -52,5 +54,8 @@ double ParticlePool::remove(MpmSolver<2>& solver, const Predicate& remove, std::
     if (removed > 0) solver.replaceParticles(selectParticles(active, keep));
     return mass;
 }
+
+template class ParticlePool<2>;
+template class ParticlePool<3>;
 
 } // namespace gpic

@@ -2,6 +2,6 @@
 
 namespace gpic {
 
-GPIC_REGISTER(Stage, RunStage, "run")
+GPIC_REGISTER_DIMS(Stage, RunStage, "run")
 
 } // namespace gpic

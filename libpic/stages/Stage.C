@@ -28,7 +28,8 @@ std::string listOf(const std::vector<std::string>& names)
 }
 } // namespace
 
-Stage::Stage(const Dictionary& dict, const StageSetup& setup, double defaultDamping, int endBody)
+template <int D>
+Stage<D>::Stage(const Dictionary& dict, const StageSetup<D>& setup, double defaultDamping, int endBody)
     : name_(lastComponent(dict.name())),
       type_(dict.get<std::string>("type")),
       file_(dict.fileName()),
@@ -61,7 +62,7 @@ Stage::Stage(const Dictionary& dict, const StageSetup& setup, double defaultDamp
             const int b = bodyId(d, key, key);
             if (!d.isDict(key)) d.fail(key, "'" + key + "' needs a driver sub-dictionary { type ...; }");
             const Dictionary& driver = d.subDict(key);
-            drivers_[static_cast<std::size_t>(b)] = RigidBodyDriver<2>::New(driver);
+            drivers_[static_cast<std::size_t>(b)] = RigidBodyDriver<D>::New(driver);
             if (driver.found("rotation"))
                 rotationFixed_[static_cast<std::size_t>(b)] = driver.getWord("rotation", {"fixed", "free"}) == "fixed";
         }
@@ -76,9 +77,11 @@ Stage::Stage(const Dictionary& dict, const StageSetup& setup, double defaultDamp
             setOpening(*open, side, side, open->getWord(side, {"open", "closed"}) == "open" ? 1 : 0);
 }
 
-Stage::~Stage() = default;
+template <int D>
+Stage<D>::~Stage() = default;
 
-int Stage::bodyId(const Dictionary& dict, const std::string& keyword, const std::string& name) const
+template <int D>
+int Stage<D>::bodyId(const Dictionary& dict, const std::string& keyword, const std::string& name) const
 {
     const auto& names = setup_.bodyNames;
     const auto it = std::find(names.begin(), names.end(), name);
@@ -87,25 +90,28 @@ int Stage::bodyId(const Dictionary& dict, const std::string& keyword, const std:
     return static_cast<int>(it - names.begin());
 }
 
-void Stage::setOpening(const Dictionary& dict, const std::string& keyword, const std::string& side, int state)
+template <int D>
+void Stage<D>::setOpening(const Dictionary& dict, const std::string& keyword, const std::string& side, int state)
 {
     const auto& sides = gridSideNames();
-    const auto it = std::find(sides.begin(), sides.end(), side);
+    const auto it = std::find(sides.begin(), sides.begin() + Space<D>::nFaces, side);
     std::vector<std::string> withOpening;
-    for (int s = 0; s < 4; ++s)
+    for (int s = 0; s < Space<D>::nFaces; ++s)
         if (setup_.sideHasOpening[s]) withOpening.push_back(sides[s]);
-    if (it == sides.end() || !setup_.sideHasOpening[it - sides.begin()])
+    if (it == sides.begin() + Space<D>::nFaces || !setup_.sideHasOpening[it - sides.begin()])
         dict.fail(keyword, "side '" + side + "' has no `opening` in constant/grid; valid choices: " +
                                (withOpening.empty() ? std::string("(none)") : listOf(withOpening)));
     openings_[static_cast<std::size_t>(it - sides.begin())] = state;
 }
 
-bool Stage::changesParticles() const
+template <int D>
+bool Stage<D>::changesParticles() const
 {
     return std::find(active_.begin(), active_.end(), 0) != active_.end();
 }
 
-std::string Stage::bodyList() const
+template <int D>
+std::string Stage<D>::bodyList() const
 {
     std::vector<std::string> names;
     for (std::size_t b = 0; b < active_.size(); ++b)
@@ -113,41 +119,46 @@ std::string Stage::bodyList() const
     return listOf(names);
 }
 
-void Stage::configure(MpmSolver<2>& solver, double t0)
+template <int D>
+void Stage<D>::configure(MpmSolver<D>& solver, double t0)
 {
     solver.setDamping(damping_);
     solver.setMassScaling(massScaling_);
     solver.setGravity(gravity());
-    for (int s = 0; s < 4; ++s) {
-        BoundaryCondition<2>& bc = solver.boundary(static_cast<GridSide>(s));
+    for (int s = 0; s < Space<D>::nFaces; ++s) {
+        BoundaryCondition<D>& bc = solver.boundary(static_cast<GridSide>(s));
         if (bc.hasOpening()) bc.setOpen(openings_[s] != 0);
     }
     solver.refreshOpenings();
-    std::vector<std::unique_ptr<RigidBodyDriver<2>>> drivers(drivers_.size());
+    std::vector<std::unique_ptr<RigidBodyDriver<D>>> drivers(drivers_.size());
     for (std::size_t b = 0; b < drivers_.size(); ++b)
-        if (drivers_[b]) drivers[b] = std::make_unique<StageTimeDriver>(std::move(drivers_[b]), t0);
+        if (drivers_[b]) drivers[b] = std::make_unique<StageTimeDriver<D>>(std::move(drivers_[b]), t0);
     solver.setRigidBodies(std::move(drivers));
-    if (auto* rotation = solver.find<CosseratRotation>()) rotation->setRigidFixed(rotationFixed_);
+    if constexpr (D == 2)
+        if (auto* rotation = solver.template find<CosseratRotation>()) rotation->setRigidFixed(rotationFixed_);
 }
 
-StageEvent Stage::begin(MpmSolver<2>& solver, ParticlePool& pool, double t, long step)
+template <int D>
+StageEvent Stage<D>::begin(MpmSolver<D>& solver, ParticlePool<D>& pool, double t, long step)
 {
     pool.exchange(
-        solver, [&](const Particles<2>& p, std::size_t q) { return !isActive(p.body[q]); },
-        [&](const Particles<2>& p, std::size_t q) { return isActive(p.body[q]) && wakesAtBegin(p, q); });
+        solver, [&](const Particles<D>& p, std::size_t q) { return !isActive(p.body[q]); },
+        [&](const Particles<D>& p, std::size_t q) { return isActive(p.body[q]) && wakesAtBegin(p, q); });
     configure(solver, t);
     until_.start(solver, t, step);
     return started(solver, pool, t, step);
 }
 
-void Stage::resume(MpmSolver<2>& solver, const Dictionary& progress, double stageStart)
+template <int D>
+void Stage<D>::resume(MpmSolver<D>& solver, const Dictionary& progress, double stageStart)
 {
     configure(solver, stageStart);
     until_.readProgress(progress.subDict("clock"));
     readOwnProgress(progress);
 }
 
-StageEvent Stage::afterStep(MpmSolver<2>& solver, ParticlePool&, double t, long step, double dt)
+template <int D>
+StageEvent Stage<D>::afterStep(MpmSolver<D>& solver, ParticlePool<D>&, double t, long step, double dt)
 {
     std::string why;
     bool timedOut = false;
@@ -155,19 +166,25 @@ StageEvent Stage::afterStep(MpmSolver<2>& solver, ParticlePool&, double t, long 
     return end(why, timedOut);
 }
 
-StageEvent Stage::end(const std::string& reason, bool timedOut)
+template <int D>
+StageEvent Stage<D>::end(const std::string& reason, bool timedOut)
 {
     reason_ = reason;
     timedOut_ = timedOut;
     return StageEvent::ended;
 }
 
-void Stage::writeProgress(std::ostream& os) const
+template <int D>
+void Stage<D>::writeProgress(std::ostream& os) const
 {
     os << "    clock\n    {\n";
     until_.writeProgress(os, "        ");
     os << "    }\n";
     writeOwnProgress(os);
 }
+
+template class Stage<2>;
+template class Stage<3>;
+
 
 } // namespace gpic

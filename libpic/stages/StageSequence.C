@@ -21,26 +21,29 @@ namespace {
 const char* const header = "# index startTime endTime startStep endStep stage type reason";
 } // namespace
 
-StageSequence::StageSequence(const Dictionary& stagesDict, StageSetup setup, std::string caseDir)
+template <int D>
+StageSequence<D>::StageSequence(const Dictionary& stagesDict, StageSetup<D> setup, std::string caseDir)
     : setup_(std::move(setup)), caseDir_(std::move(caseDir))
 {
     for (const auto& key : stagesDict.keys()) {
         if (!stagesDict.isDict(key))
             stagesDict.fail(key, "'" + key + "' is not a stage sub-dictionary { type ...; until { ... } }");
-        stages_.push_back(Stage::New(stagesDict.subDict(key), setup_));
+        stages_.push_back(Stage<D>::New(stagesDict.subDict(key), setup_));
     }
-    if (stages_.empty()) stagesDict.fail("", "stages holds no stage; valid types: " + Registry<Stage>::validChoices());
+    if (stages_.empty()) stagesDict.fail("", "stages holds no stage; valid types: " + Registry<Stage<D>>::validChoices());
     setup_.rigidBodies = nullptr;  // read by the stages' constructors only; the caller's to keep
 }
 
-bool StageSequence::changesParticles() const
+template <int D>
+bool StageSequence<D>::changesParticles() const
 {
     for (const auto& s : stages_)
         if (s->changesParticles()) return true;
     return false;
 }
 
-void StageSequence::restore(const Dictionary* stageFile, Particles<2> dormant)
+template <int D>
+void StageSequence<D>::restore(const Dictionary* stageFile, Particles<D> dormant)
 {
     pool_.dormant() = std::move(dormant);
     fresh_ = stageFile == nullptr;
@@ -62,14 +65,16 @@ void StageSequence::restore(const Dictionary* stageFile, Particles<2> dormant)
     progress_ = f.subDictPtr("progress") ? *f.subDictPtr("progress") : Dictionary();
 }
 
-void StageSequence::logBegin(double t, long step) const
+template <int D>
+void StageSequence<D>::logBegin(double t, long step) const
 {
-    const Stage& s = *stages_[index_];
+    const Stage<D>& s = *stages_[index_];
     info() << "Stage " << s.name() << " (" << s.type() << ") begins at t = " << t << " s, step " << step
            << ": bodies " << s.bodyList() << ", damping " << s.damping() << "\n";
 }
 
-void StageSequence::start(MpmSolver<2>& solver, double t, long step)
+template <int D>
+void StageSequence<D>::start(MpmSolver<D>& solver, double t, long step)
 {
     // Rows of stages.dat from a run this one replaces (a restart from an earlier time) go.
     const fs::path dat = fs::path(caseDir_) / "postProcessing/stages.dat";
@@ -87,7 +92,7 @@ void StageSequence::start(MpmSolver<2>& solver, double t, long step)
         std::ofstream(dat) << kept.str();
     }
     if (begun_) {
-        Stage& s = *stages_[index_];
+        Stage<D>& s = *stages_[index_];
         s.resume(solver, progress_, startTime_);
         info() << "Stage " << s.name() << " (" << s.type() << ") carries on at t = " << t << " s, step " << step
                << " (begun at t = " << startTime_ << " s, step " << startStep_ << ")\n";
@@ -96,13 +101,14 @@ void StageSequence::start(MpmSolver<2>& solver, double t, long step)
     if (fresh_) {
         // Everything sleeps until a stage wakes it: a fill starts from an empty box.
         pool_.exchange(
-            solver, [](const Particles<2>&, std::size_t) { return true; }, [](const Particles<2>&, std::size_t) { return false; });
+            solver, [](const Particles<D>&, std::size_t) { return true; }, [](const Particles<D>&, std::size_t) { return false; });
         fresh_ = false;
     }
     beginNext(solver, t, step);
 }
 
-void StageSequence::beginNext(MpmSolver<2>& solver, double t, long step)
+template <int D>
+void StageSequence<D>::beginNext(MpmSolver<D>& solver, double t, long step)
 {
     while (!done()) {
         begun_ = true;
@@ -114,10 +120,11 @@ void StageSequence::beginNext(MpmSolver<2>& solver, double t, long step)
     }
 }
 
-StageEvent StageSequence::afterStep(MpmSolver<2>& solver, double t, long step, double dt)
+template <int D>
+StageEvent StageSequence<D>::afterStep(MpmSolver<D>& solver, double t, long step, double dt)
 {
     if (done()) return StageEvent::none;
-    Stage& s = *stages_[index_];
+    Stage<D>& s = *stages_[index_];
     // dt == 0: a stage that ended as it began (beginNext).
     const StageEvent event = dt > 0 ? s.afterStep(solver, pool_, t, step, dt) : StageEvent::ended;
     if (event != StageEvent::ended) return event;
@@ -132,7 +139,8 @@ StageEvent StageSequence::afterStep(MpmSolver<2>& solver, double t, long step, d
     return StageEvent::ended;
 }
 
-void StageSequence::appendRow(const Record& r) const
+template <int D>
+void StageSequence<D>::appendRow(const Record& r) const
 {
     const fs::path dir = fs::path(caseDir_) / "postProcessing";
     fs::create_directories(dir);
@@ -146,17 +154,20 @@ void StageSequence::appendRow(const Record& r) const
     out << times << " " << r.name << " " << r.type << " \"" << r.reason << "\"\n";
 }
 
-double StageSequence::landOn() const
+template <int D>
+double StageSequence<D>::landOn() const
 {
     return done() || !begun_ ? std::numeric_limits<double>::infinity() : stages_[index_]->landOn();
 }
 
-Vector2 StageSequence::gravity() const
+template <int D>
+typename Space<D>::Vector StageSequence<D>::gravity() const
 {
     return done() ? setup_.gravity : stages_[index_]->gravity();
 }
 
-void StageSequence::writeStageFile(const std::string& timeDir, const std::string& timeName) const
+template <int D>
+void StageSequence<D>::writeStageFile(const std::string& timeDir, const std::string& timeName) const
 {
     fs::create_directories(fs::path(timeDir) / "uniform");
     const fs::path file = fs::path(timeDir) / "uniform/stage";
@@ -173,5 +184,8 @@ void StageSequence::writeStageFile(const std::string& timeDir, const std::string
     }
     if (!os) throw RunError("cannot write " + file.string());
 }
+
+template class StageSequence<2>;
+template class StageSequence<3>;
 
 } // namespace gpic

@@ -1,5 +1,6 @@
-// picSolver: explicit MPM/PIC for granular flow (plane strain). Runs a case from its latest
-// (or chosen) time directory to endTime, writing ParaView time directories.
+// picSolver: explicit MPM/PIC for granular flow (plane strain, axisymmetric or 3D, as the
+// case's constant/grid says). Runs a case from its latest (or chosen) time directory to
+// endTime, writing ParaView time directories.
 #include "applicationMain.H"
 #include "run/Simulation.H"
 
@@ -20,7 +21,6 @@ int main(int argc, char** argv)
             run.quiet = vm.count("quiet") > 0;
             // OMP_NUM_THREADS fixes the count; without it the run measures which count is faster.
             run.tuneThreads = std::getenv("OMP_NUM_THREADS") == nullptr;
-            gpic::Simulation simulation(run, gpic::readCase(run));
-            simulation.run();
+            gpic::runCase(run);
         });
 }

@@ -43,25 +43,45 @@ template <class Base> void list()
     }
     std::cout << Base::kindName << ": " << (line.empty() ? "(none)" : line) << '\n';
 }
+
+//- A kind templated on the dimension: every name, marked where it serves one dimension only.
+template <template <int> class Kind> void listDims()
+{
+    std::set<std::string> names;
+    for (const auto& [name, entry] : gpic::Registry<Kind<2>>::table()) names.insert(name);
+    for (const auto& [name, entry] : gpic::Registry<Kind<3>>::table()) names.insert(name);
+    std::string line;
+    for (const std::string& name : names) {
+        const auto plane = gpic::Registry<Kind<2>>::table().find(name);
+        const auto solid = gpic::Registry<Kind<3>>::table().find(name);
+        const std::string& library = plane != gpic::Registry<Kind<2>>::table().end() ? plane->second.library
+                                                                                      : solid->second.library;
+        line += (line.empty() ? "" : ", ") + name;
+        if (!projectLibrary(library)) line += " [" + fs::path(library).filename().string() + "]";
+        if (solid == gpic::Registry<Kind<3>>::table().end()) line += " (2D)";
+        else if (plane == gpic::Registry<Kind<2>>::table().end()) line += " (3D)";
+    }
+    std::cout << Kind<2>::kindName << ": " << (line.empty() ? "(none)" : line) << '\n';
+}
 } // namespace
 
 int main(int argc, char** argv)
 {
     boost::program_options::options_description options("picToC options");
-    return gpic::applicationMain(argc, argv, "picToC: list the run-time selectable types", options,
+    return gpic::applicationMain(argc, argv, "picToC: list the run-time selectable types ((2D): plane scenes only, (3D): 3D only)", options,
                                  [](const auto&) {
-                                     list<gpic::Material<2>>();
-                                     list<gpic::BoundaryCondition<2>>();
-                                     list<gpic::ContactLaw<2>>();
-                                     list<gpic::ContactNormals<2>>();
-                                     list<gpic::ContactPass<2>>();
-                                     list<gpic::ShapeFunction<2>>();
+                                     listDims<gpic::Material>();
+                                     listDims<gpic::BoundaryCondition>();
+                                     listDims<gpic::ContactLaw>();
+                                     listDims<gpic::ContactNormals>();
+                                     listDims<gpic::ContactPass>();
+                                     listDims<gpic::ShapeFunction>();
                                      list<gpic::UpdateScheme>();
                                      list<gpic::ParticleTransfer>();
-                                     list<gpic::FunctionObject>();
-                                     list<gpic::Shape>();
-                                     list<gpic::RigidBodyDriver<2>>();
-                                     list<gpic::ParticleLoad<2>>();
-                                     list<gpic::Stage>();
+                                     listDims<gpic::FunctionObject>();
+                                     listDims<gpic::Shape>();
+                                     listDims<gpic::RigidBodyDriver>();
+                                     listDims<gpic::ParticleLoad>();
+                                     listDims<gpic::Stage>();
                                  });
 }

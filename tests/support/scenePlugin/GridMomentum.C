@@ -6,9 +6,9 @@
 
 namespace scenePlugin {
 
-class GridMomentum : public gpic::FunctionObject {
+class GridMomentum : public gpic::FunctionObject<2> {
 public:
-    GridMomentum(const gpic::Dictionary& dict, const gpic::RunContext& context) : FunctionObject(dict, context) {}
+    GridMomentum(const gpic::Dictionary& dict, const gpic::RunContext& context) : FunctionObject<2>(dict, context) {}
 
     std::vector<gpic::StepPoint> stepPoints() const override
     {
@@ -41,6 +41,6 @@ private:
     double mass_ = 0, stepStart_ = 0;
 };
 
-GPIC_REGISTER(gpic::FunctionObject, GridMomentum, "gridMomentum")
+GPIC_REGISTER(gpic::FunctionObject<2>, GridMomentum, "gridMomentum")
 
 } // namespace scenePlugin

@@ -1,0 +1,106 @@
+// The built-in 3D shapes (Shape.H): a box, a sphere, a cylinder between two points and a
+// polygon extruded along x3.
+#include "bodies/PolygonShape.H"
+
+#include "dictionary/Dictionary.H"
+
+#include <cmath>
+
+namespace gpic {
+
+using Vector3 = Space<3>::Vector;
+
+class BoxShape : public Shape<3> {
+public:
+    explicit BoxShape(const Dictionary& d) : min_(d.get<Vector3>("min")), max_(d.get<Vector3>("max"))
+    {
+        if (!(max_.array() > min_.array()).all()) d.fail("max", "max must exceed min in x, y and z");
+    }
+    bool inside(const Vector3& x) const override
+    {
+        return (x.array() >= min_.array()).all() && (x.array() <= max_.array()).all();
+    }
+    std::pair<Vector3, Vector3> bounds() const override { return {min_, max_}; }
+
+private:
+    Vector3 min_, max_;
+};
+
+class SphereShape : public Shape<3> {
+public:
+    explicit SphereShape(const Dictionary& d)
+        : centre_(d.get<Vector3>("centre")),
+          radius_(d.getChecked<double>("radius", [](const double& r) { return r > 0; }, "radius > 0"))
+    {}
+    bool inside(const Vector3& x) const override { return (x - centre_).norm() <= radius_; }
+    std::pair<Vector3, Vector3> bounds() const override
+    {
+        return {centre_ - Vector3::Constant(radius_), centre_ + Vector3::Constant(radius_)};
+    }
+
+private:
+    Vector3 centre_;
+    double radius_;
+};
+
+//- The solid cylinder of radius `radius` about the segment point1 - point2 (OpenFOAM's
+//  cylinderToCell names the same keywords), flat at both ends.
+class CylinderShape : public Shape<3> {
+public:
+    explicit CylinderShape(const Dictionary& d)
+        : p1_(d.get<Vector3>("point1")),
+          p2_(d.get<Vector3>("point2")),
+          radius_(d.getChecked<double>("radius", [](const double& r) { return r > 0; }, "radius > 0"))
+    {
+        if (!((p2_ - p1_).norm() > 0)) d.fail("point2", "point2 must differ from point1 (the axis' two ends)");
+    }
+    bool inside(const Vector3& x) const override
+    {
+        const Vector3 axis = p2_ - p1_;
+        const double s = (x - p1_).dot(axis) / axis.squaredNorm();  // 0 at point1, 1 at point2
+        if (s < 0 || s > 1) return false;
+        return (x - p1_ - s * axis).norm() <= radius_;
+    }
+    std::pair<Vector3, Vector3> bounds() const override
+    {
+        // Each end disc reaches radius * sqrt(1 - a_i^2) along axis i (a: the unit axis).
+        const Vector3 a = (p2_ - p1_).normalized();
+        const Vector3 reach = radius_ * (Vector3::Ones() - a.cwiseProduct(a)).cwiseMax(0.0).cwiseSqrt();
+        return {p1_.cwiseMin(p2_) - reach, p1_.cwiseMax(p2_) + reach};
+    }
+
+private:
+    Vector3 p1_, p2_;
+    double radius_;
+};
+
+//- A simple polygon in (x1, x2), extruded from x3 = zMin to zMax: a wall, a strip footing
+//  or a plane-strain body given a finite width.
+class ExtrudedPolygonShape : public Shape<3> {
+public:
+    explicit ExtrudedPolygonShape(const Dictionary& d)
+        : section_(d), zMin_(d.get<double>("zMin")), zMax_(d.get<double>("zMax"))
+    {
+        if (!(zMax_ > zMin_)) d.fail("zMax", "zMax must exceed zMin");
+    }
+    bool inside(const Vector3& x) const override
+    {
+        return x.z() >= zMin_ && x.z() <= zMax_ && section_.inside(Vector2(x.x(), x.y()));
+    }
+    std::pair<Vector3, Vector3> bounds() const override
+    {
+        const auto [lo, hi] = section_.bounds();
+        return {Vector3(lo.x(), lo.y(), zMin_), Vector3(hi.x(), hi.y(), zMax_)};
+    }
+
+private:
+    PolygonShape section_;
+    double zMin_, zMax_;
+};
+
+GPIC_REGISTER(Shape<3>, BoxShape, "box")
+GPIC_REGISTER(Shape<3>, SphereShape, "sphere")
+GPIC_REGISTER(Shape<3>, CylinderShape, "cylinder")
+GPIC_REGISTER(Shape<3>, ExtrudedPolygonShape, "extrudedPolygon")
+
+} // namespace gpic

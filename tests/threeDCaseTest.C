@@ -1,0 +1,311 @@
+// 3D cases from their files, through picInit and picSolver as a user runs them (the reader
+// picks the dimension from constant/grid):
+// - plane strain recovered: a confined column settling under gravity, run as a plane case
+//   and as a 3D slab one cell thick between symmetry faces, ends with the same stresses,
+//   positions and velocities to round-off (1e-9 of the largest stress);
+// - a block falling freely in 3D (gravity along -x3) drops by g t^2 / 2 to within the
+//   explicit step's own error, g t dt, and keeps its place across gravity (bodyMotion);
+// - a 3D run stopped and restarted from its time directory ends with the same particle file,
+//   byte for byte, as the straight run; the time directories hold 3D particles and grids;
+// - the 3D bodies (box, sphere, cylinder on a slanted axis, extruded polygon) hold the
+//   volume of their closed forms, and a geostatic initial stress is vertical along x3;
+// - what is plane-only (polar materials, an axisymmetric grid, plane shapes and function
+//   objects) is refused in a 3D case with one line saying so.
+#include "case/CaseFiles.H"
+#include "io/GridVtk.H"
+#include "io/ParticlesVtk.H"
+#include "support/CaseRunner.H"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <utility>
+
+using namespace gpic;
+using namespace gpic::test;
+
+namespace {
+
+//- The files of a case, each a dictionary's text.
+struct Scene {
+    std::string grid, materials, bodies, g;
+    std::string control = "startFrom latestTime;\nstartTime 0;\nstopAt endTime;\nendTime 0.05;\ndeltaT 1e-4;\n"
+                          "writeControl adjustableRunTime;\nwriteInterval 0.025;\n";
+    std::string schemes;
+};
+
+void write(const fs::path& dir, const Scene& s)
+{
+    writeDictionary(dir / "constant/grid", s.grid);
+    writeDictionary(dir / "constant/materials", s.materials);
+    writeDictionary(dir / "constant/bodies", s.bodies);
+    if (!s.g.empty()) writeDictionary(dir / "constant/g", s.g);
+    writeDictionary(dir / "system/controlDict", s.control);
+    if (!s.schemes.empty()) writeDictionary(dir / "system/mpmSchemes", s.schemes);
+}
+
+const char* const sand = "sand { type mohrCoulomb; rho 2000; E 2e6; nu 0.3; phi 30; psi 0; c 0; }\n";
+
+//- A column of sand 0.1 m wide and high in a box with smooth walls, settling under gravity:
+//  the plane case, or the slab of one 0.02 m cell between symmetry faces.
+Scene column(int dimensions)
+{
+    Scene s;
+    s.materials = sand;
+    if (dimensions == 2) {
+        s.grid = "origin (0 0); cellSize 0.02; nCells (5 6);\n"
+                 "boundaries { left { type symmetry; } right { type symmetry; } bottom { type fixed; } "
+                 "top { type free; } }\n";
+        s.bodies = "column { material sand; shape { type rectangle; min (0 0); max (0.1 0.1); } particlesPerCell 2; }\n";
+        s.g = "value (0 -9.81);\n";
+    } else {
+        s.grid = "origin (0 0 0); cellSize 0.02; nCells (5 6 1);\n"
+                 "boundaries { left { type symmetry; } right { type symmetry; } bottom { type fixed; } "
+                 "top { type free; } back { type symmetry; } front { type symmetry; } }\n";
+        s.bodies = "column { material sand; shape { type box; min (0 0 0); max (0.1 0.1 0.02); } particlesPerCell 2; }\n";
+        s.g = "value (0 -9.81 0);\n";
+    }
+    return s;
+}
+
+std::string readFile(const fs::path& file)
+{
+    std::ifstream in(file, std::ios::binary);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+//- The message of the InputError that picInit (then the solver's reader) throws for `dir`.
+std::string refusal(const fs::path& dir)
+{
+    try {
+        initialiseCase(dir.string());
+        RunOptions options;
+        options.caseDir = dir.string();
+        options.quiet = true;
+        Simulation<3> s(options);
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+} // namespace
+
+TEST(ThreeDCase, aSlabBetweenSymmetryFacesGivesThePlaneStrainRunToRoundOff)
+{
+    ScratchDir scratch{"slab"};
+    const fs::path plane = scratch.path() / "plane", slab = scratch.path() / "slab";
+    write(plane, column(2));
+    write(slab, column(3));
+    const auto p2 = runAndKeep<2>(plane);
+    const auto p3 = runAndKeep<3>(slab);
+    const Particles<2>& a = p2->solver().particles();
+    const Particles<3>& b = p3->solver().particles();
+    ASSERT_EQ(b.size(), 2 * a.size()) << "two layers of particles across the slab";
+    // The slab's particles by their plane place at the start (the sort reorders both sets).
+    std::map<std::pair<double, double>, std::size_t> planeIndex;
+    for (std::size_t q = 0; q < a.size(); ++q) planeIndex[{a.x0[q].x(), a.x0[q].y()}] = q;
+    double sMax = 0;
+    for (std::size_t q = 0; q < a.size(); ++q) sMax = std::max(sMax, a.sigma[q].cwiseAbs().maxCoeff());
+    ASSERT_GT(sMax, 500.0) << "the column carries its weight (rho g H = 1962 Pa)";
+    double worstStress = 0, worstPlace = 0, worstShear = 0, worstOut = 0;
+    for (std::size_t k = 0; k < b.size(); ++k) {
+        const auto it = planeIndex.find({b.x0[k].x(), b.x0[k].y()});
+        ASSERT_NE(it, planeIndex.end()) << "slab particle " << k << " has no plane twin";
+        const std::size_t q = it->second;
+        for (int c : {XX, YY, ZZ, XY}) worstStress = std::max(worstStress, std::abs(b.sigma[k][c] - a.sigma[q][c]));
+        worstShear = std::max({worstShear, std::abs(b.sigma[k][YZ]), std::abs(b.sigma[k][XZ])});
+        worstOut = std::max({worstOut, std::abs(b.v[k].z()), std::abs(b.x[k].z() - b.x0[k].z())});
+        worstPlace = std::max({worstPlace, std::abs(b.x[k].x() - a.x[q].x()), std::abs(b.x[k].y() - a.x[q].y())});
+    }
+    EXPECT_LT(worstStress, 1e-9 * sMax);
+    EXPECT_LT(worstPlace, 1e-12);
+    EXPECT_LT(worstShear, 1e-12 * sMax) << "no shear out of the plane";
+    EXPECT_LT(worstOut, 1e-15) << "nothing moves out of the plane";
+}
+
+TEST(ThreeDCase, aBlockFallsFreelyAlongGravityAndKeepsItsPlaceAcrossIt)
+{
+    ScratchDir scratch{"fall"};
+    Scene s;
+    s.materials = "rubber { type linearElastic; rho 1000; E 1e5; nu 0.3; }\n";
+    s.grid = "origin (0 0 0); cellSize 0.05; nCells (6 6 20);\n"
+             "boundaries { left { type free; } right { type free; } bottom { type free; } top { type free; } "
+             "back { type free; } front { type free; } }\n";
+    s.bodies = "block { material rubber; shape { type box; min (0.1 0.1 0.8); max (0.2 0.25 0.9); } "
+               "particlesPerCell 2; }\n";
+    s.g = "value (0 0 -9.81);\n";
+    const double dt = 1e-4, T = 0.2;
+    s.control = "startFrom latestTime;\nstartTime 0;\nstopAt endTime;\nendTime 0.2;\ndeltaT 1e-4;\n"
+                "writeControl adjustableRunTime;\nwriteInterval 0.1;\n"
+                "functions { motion { type bodyMotion; writeInterval 100; } }\n";
+    write(scratch.path(), s);
+    runAndKeep<3>(scratch.path());  // ended: its files closed
+    const auto rows = readColumns(scratch.path() / "postProcessing/motion/0/bodyMotion.dat");
+    ASSERT_EQ(rows.at("time").size(), 21u);
+    for (std::size_t r = 0; r < rows.at("time").size(); ++r) {
+        const double t = rows.at("time")[r];
+        const double drop = 0.85 - rows.at("block:z")[r];
+        EXPECT_NEAR(drop, 0.5 * 9.81 * t * t, 9.81 * t * dt + 1e-12) << "t = " << t;
+        EXPECT_NEAR(rows.at("block:vz")[r], -9.81 * t, 1e-9) << "t = " << t;
+        EXPECT_NEAR(rows.at("block:x")[r], 0.15, 1e-12);
+        EXPECT_NEAR(rows.at("block:y")[r], 0.175, 1e-12);
+    }
+    EXPECT_NEAR(rows.at("time").back(), T, 1e-12);
+}
+
+TEST(ThreeDCase, aRestartedRunEndsWithTheStraightRunsParticleFileByteForByte)
+{
+    ScratchDir scratch{"restart3d"};
+    const fs::path straight = scratch.path() / "straight", split = scratch.path() / "split";
+    Scene s = column(3);
+    s.control += "writeGrid yes;\n";
+    write(straight, s);
+    write(split, s);
+    runAndKeep<3>(straight);
+    setEntry(split / "system/controlDict", "endTime", "0.025");
+    runAndKeep<3>(split);
+    setEntry(split / "system/controlDict", "endTime", "0.05");
+    RunOptions options;
+    options.caseDir = split.string();
+    options.quiet = true;
+    Simulation<3>(options).run();
+    const std::string a = readFile(straight / "0.05/particles.vtp"), b = readFile(split / "0.05/particles.vtp");
+    ASSERT_FALSE(a.empty());
+    EXPECT_TRUE(a == b) << "the restarted run's particles differ from the straight run's";
+
+    // The files are 3D: the particles' third coordinate and the grid's third axis.
+    Particles<3> p;
+    double t = 0;
+    readParticles((straight / "0.05/particles.vtp").string(), p, t);
+    EXPECT_EQ(t, 0.05);
+    double zMax = 0;
+    for (const auto& x : p.x) zMax = std::max(zMax, x.z());
+    EXPECT_NEAR(zMax, 0.015, 1e-12) << "the upper layer of particles across the slab";
+    const GridVtkInfo grid = readGridInfo((straight / "0.05/grid.vti").string());
+    EXPECT_EQ(grid.dimensions, (std::array<int, 3>{6, 7, 2}));
+    EXPECT_EQ(grid.spacing[2], 0.02);
+}
+
+TEST(ThreeDCase, theSolidBodiesHoldTheVolumesOfTheirClosedForms)
+{
+    ScratchDir scratch{"solids"};
+    Scene s;
+    s.materials = sand;
+    s.grid = "origin (0 0 0); cellSize 0.01; nCells (60 30 30);\n"
+             "boundaries { left { type fixed; } right { type fixed; } bottom { type fixed; } top { type fixed; } "
+             "back { type fixed; } front { type fixed; } }\n";
+    s.bodies =
+        "box { material sand; shape { type box; min (0.01 0.01 0.01); max (0.09 0.15 0.12); } particlesPerCell 2; }\n"
+        "ball { material sand; shape { type sphere; centre (0.2 0.15 0.15); radius 0.1; } particlesPerCell 2; }\n"
+        "rod { material sand; shape { type cylinder; point1 (0.33 0.05 0.05); point2 (0.43 0.25 0.25); radius 0.04; } "
+        "particlesPerCell 2; }\n"
+        "wedge { material sand; shape { type extrudedPolygon; points ((0.46 0.02) (0.58 0.02) (0.46 0.2)); "
+        "zMin 0.05; zMax 0.25; } particlesPerCell 2; initialStress { type geostatic; K0 0.5; surface 0.3; } }\n";
+    s.g = "value (0 0 -10);\n";
+    write(scratch.path(), s);
+    initialiseCase(scratch.path().string());
+    Particles<3> p;
+    double t = 0;
+    std::vector<std::string> materials, bodies;
+    readParticles((scratch.path() / "0/particles.vtp").string(), p, t, &materials, &bodies);
+    ASSERT_EQ(bodies, (std::vector<std::string>{"box", "ball", "rod", "wedge"}));
+    std::vector<double> V(4, 0.0);
+    for (std::size_t q = 0; q < p.size(); ++q) V[static_cast<std::size_t>(p.body[q])] += p.V[q];
+    const double pi = M_PI;
+    EXPECT_NEAR(V[0], 0.08 * 0.14 * 0.11, 1e-12);                         // exact on the lattice
+    EXPECT_NEAR(V[1] / (4.0 / 3.0 * pi * 1e-3), 1.0, 0.03);
+    EXPECT_NEAR(V[2] / (pi * 0.04 * 0.04 * std::sqrt(0.1 * 0.1 + 2 * 0.2 * 0.2)), 1.0, 0.05);
+    EXPECT_NEAR(V[3] / (0.5 * 0.12 * 0.18 * 0.2), 1.0, 0.03);
+    // The geostatic stress of the wedge: vertical along x3, K0 across it (eqs. 3.3.1-3.3.2).
+    for (std::size_t q = 0; q < p.size(); ++q) {
+        if (p.body[q] != 3) continue;
+        const double sV = -2000 * 10 * (0.3 - p.x[q].z());
+        ASSERT_NEAR(p.sigma[q][ZZ], sV, 1e-9);
+        ASSERT_NEAR(p.sigma[q][XX], 0.5 * sV, 1e-9);
+        ASSERT_NEAR(p.sigma[q][YY], 0.5 * sV, 1e-9);
+        ASSERT_EQ(p.sigma[q][XY], 0.0);
+    }
+}
+
+TEST(ThreeDCase, planeOnlyModelsGridsShapesAndFunctionObjectsAreRefusedInOneLine)
+{
+    ScratchDir scratch{"planeOnly"};
+    const auto attempt = [&](const std::string& tag, const std::function<void(Scene&)>& change) {
+        Scene s = column(3);
+        change(s);
+        const fs::path dir = scratch.path() / tag;
+        write(dir, s);
+        return refusal(dir);
+    };
+    const std::string polar = attempt("polar", [](Scene& s) {
+        s.materials = "sand { type cosseratElastic; rho 2000; E 2e6; nu 0.3; Gc 1e5; lc 0.01; }\n";
+    });
+    EXPECT_NE(polar.find("material type 'cosseratElastic'"), std::string::npos) << polar;
+    EXPECT_NE(polar.find("plane (2D) scenes only"), std::string::npos) << polar;
+    EXPECT_EQ(polar.find('\n'), std::string::npos) << polar;
+
+    const std::string axisymmetric =
+        attempt("axisymmetric", [](Scene& s) { s.grid = "geometry axisymmetric;\n" + s.grid; });
+    EXPECT_NE(axisymmetric.find("geometry axisymmetric is a plane scene"), std::string::npos) << axisymmetric;
+
+    const std::string rectangle = attempt("rectangle", [](Scene& s) {
+        s.bodies = "column { material sand; shape { type rectangle; min (0 0); max (0.1 0.1); } particlesPerCell 2; }\n";
+    });
+    EXPECT_NE(rectangle.find("shape type 'rectangle'"), std::string::npos) << rectangle;
+    EXPECT_NE(rectangle.find("plane (2D) scenes only"), std::string::npos) << rectangle;
+
+    const std::string wear = attempt("toolWear", [](Scene& s) {
+        s.control += "functions { wear { type toolWear; body column; } }\n";
+    });
+    EXPECT_NE(wear.find("functionObject type 'toolWear'"), std::string::npos) << wear;
+    EXPECT_NE(wear.find("plane (2D) scenes only"), std::string::npos) << wear;
+}
+
+TEST(ThreeDCase, aRigidPlatePressingABoxOfElasticMaterialFeelsTheOedometricForce)
+{
+    // An elastic cube (L = 0.1 m) in a box with smooth walls and a fixed floor, pressed by a
+    // rigid plate (prescribedVelocity) at v = 0.01 m/s: uniaxial strain, so the material
+    // pushes the plate up with F = M A d / L, M = E (1 - nu) / ((1 + nu)(1 - 2 nu)), d = v t,
+    // within 3 % (the wave the start sets off adds about rho c v A, 1.4 %); its moment about
+    // the plate's centre is nil, and the plate has done the work F d / 2 on the material
+    // (within 3 %).
+    ScratchDir scratch{"plate3d"};
+    Scene s;
+    s.materials = "rubber { type linearElastic; rho 1000; E 1e6; nu 0.3; }\nsteel { type linearElastic; rho 7800; "
+                  "E 2e11; nu 0.3; }\n";
+    s.grid = "origin (0 0 0); cellSize 0.025; nCells (4 6 4);\n"
+             "boundaries { left { type slip; } right { type slip; } bottom { type fixed; } top { type free; } "
+             "back { type slip; } front { type slip; } }\n";
+    s.bodies = "cube { material rubber; shape { type box; min (0 0 0); max (0.1 0.1 0.1); } particlesPerCell 2; }\n"
+               "plate { material steel; shape { type box; min (0 0.1 0); max (0.1 0.125 0.1); } particlesPerCell 2; }\n";
+    writeDictionary(scratch.path() / "constant/rigidBodies", "plate { type prescribedVelocity; velocity (0 -0.01 0); }\n");
+    s.control = "startFrom latestTime;\nstartTime 0;\nstopAt endTime;\nendTime 0.2;\ndeltaT 1;\nadjustTimeStep yes;\n"
+                "maxCourant 0.5;\nwriteControl adjustableRunTime;\nwriteInterval 0.1;\n"
+                "functions { forces { type forces; bodies (plate); CofR (0.05 0.1125 0.05); writeInterval 25; } }\n";
+    write(scratch.path(), s);
+    runAndKeep<3>(scratch.path());
+    const auto rows = readColumns(scratch.path() / "postProcessing/forces/0/forces.dat");
+    const double M = 1e6 * 0.7 / (1.3 * 0.4), A = 0.01, L = 0.1, v = 0.01;
+    std::size_t checked = 0;
+    for (std::size_t r = 0; r < rows.at("time").size(); ++r) {
+        const double t = rows.at("time")[r];
+        if (t < 0.05) continue;  // the first waves
+        const double F = M * A * v * t / L;
+        EXPECT_NEAR(rows.at("plate:Fy")[r], F, 0.03 * F) << "t = " << t;
+        EXPECT_NEAR(rows.at("plate:Fx")[r], 0.0, 1e-9 * F);
+        EXPECT_NEAR(rows.at("plate:Fz")[r], 0.0, 1e-9 * F);
+        for (const char* m : {"plate:Mx", "plate:My", "plate:Mz"}) EXPECT_NEAR(rows.at(m)[r], 0.0, 1e-9 * F * L) << m;
+        EXPECT_NEAR(rows.at("plate:dy")[r], -v * t, 1e-9);
+        ++checked;
+    }
+    EXPECT_GT(checked, 10u);
+    const double d = v * rows.at("time").back(), W = 0.5 * M * A * d * d / L;
+    EXPECT_NEAR(rows.at("plate:W").back(), W, 0.03 * W);
+}
