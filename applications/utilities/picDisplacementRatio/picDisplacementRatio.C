@@ -9,6 +9,7 @@
 //     picDisplacementRatio -from 1.5 -to 2.5 -tool blade
 //     picDisplacementRatio -from 1.5 -to 2.5 -tool blade -threshold 0.2
 #include "applicationMain.H"
+#include "PlaneCaseOnly.H"
 
 #include "Gnuplot.H"
 
@@ -40,6 +41,7 @@ int main(int argc, char** argv)
     return applicationMain(
         argc, argv, "Particle displacement ratio over a window: CSV and PNG.", options, [](const po::variables_map& vm) {
             const std::string caseDir = vm["case"].as<std::string>();
+            refuseThreeD(caseDir, "picDisplacementRatio", "compare the displacement arrays of two time directories in ParaView");
             const std::string from = findTime(caseDir, vm["from"].as<double>());
             const std::string to = findTime(caseDir, vm["to"].as<double>());
             const double threshold = vm["threshold"].as<double>();

@@ -10,6 +10,7 @@
 //     picFieldMap -field stress:xy                       # a component (xx xy ... zz, x y z, 0..n-1, mag)
 //     picFieldMap -field initialPosition:y -bands 10     # coloured layers (seed figs. 6.9-6.11)
 #include "applicationMain.H"
+#include "PlaneCaseOnly.H"
 
 #include "Gnuplot.H"
 #include "ParticleField.H"
@@ -116,6 +117,7 @@ int main(int argc, char** argv)
         argc, argv, "Map of a particle field at its positions: CSV and PNG per time directory.", options,
         [](const po::variables_map& vm) {
             const std::string caseDir = vm["case"].as<std::string>();
+            refuseThreeD(caseDir, "picFieldMap", "open its particles.vtp in ParaView and colour a Slice by the field");
             if (vm.count("bands") && vm["bands"].as<int>() < 2)
                 throw InputError("", 0, "-bands: expected a number of bands >= 2");
             if (vm.count("range")) {

@@ -13,6 +13,7 @@
 //     picForces -surface "(0.3 0.05) (0.3 0.4)" -time 4
 //     picForces -wear                            # postProcessing/<toolWear>/<latest>/wearProfile.dat
 #include "applicationMain.H"
+#include "PlaneCaseOnly.H"
 
 #include "ForcePlot.H"
 #include "ForceSeries.H"
@@ -183,6 +184,7 @@ int main(int argc, char** argv)
         argc, argv, "picForces: forces on rigid bodies (CSV, plot, window mean) and stress along a tool face",
         options, [](const po::variables_map& vm) {
             const std::string caseDir = vm["case"].as<std::string>();
+            refuseThreeD(caseDir, "picForces", "read postProcessing/<name>/<time>/forces.dat, whose header names its columns (Fx Fy Fz Mx My Mz dx dy dz W per body)");
             const fs::path outDir = fs::path(caseDir) / "postProcessing" / "picForces";
             if (vm.count("wear")) return wearProfile(caseDir, outDir, vm);
             if (vm.count("surface")) return surfaceProfile(caseDir, outDir, vm);

@@ -8,6 +8,7 @@
 //     picFreeSurface -allTimes
 //     picFreeSurface -times "0 4 8 12" -bodies corn
 #include "applicationMain.H"
+#include "PlaneCaseOnly.H"
 
 #include "Gnuplot.H"
 #include "ParticleField.H"
@@ -61,6 +62,7 @@ int main(int argc, char** argv)
         argc, argv, "Free surface of the material per time directory: CSV and PNG.", options,
         [](const po::variables_map& vm) {
             const std::string caseDir = vm["case"].as<std::string>();
+            refuseThreeD(caseDir, "picFreeSurface", "open its particles.vtp in ParaView and take a Slice through the surface");
             const std::vector<std::string> times = selectedTimes(vm, caseDir);
             const std::vector<int> bodies = vm.count("bodies") ? vm["bodies"].as<std::vector<int>>() : std::vector<int>{};
             double width = vm.count("width") ? vm["width"].as<double>() : 0.0;
