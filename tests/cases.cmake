@@ -60,6 +60,9 @@ foreach(tutorial "verification/elasticBar;bar.png;error.png"
                  "studies/bladeDepthFriction;force.png;error.png"
                  "studies/bucketGeometry;studies/bucketGeometry/plots/carried-toothLength.png;studies/bucketGeometry/plots/toothWear-toothAngle.png")
   list(GET tutorial 0 path)
+  if(NOT GPIC_WITH_3D AND path STREQUAL "geotechnics/cylinderCollapse")
+    continue()  # a 3D case: a plane build refuses it
+  endif()
   list(SUBLIST tutorial 1 -1 plots)
   string(REPLACE "/" "_" name "tutorial_${path}")
   add_test(NAME ${name}

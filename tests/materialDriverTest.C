@@ -358,3 +358,37 @@ TEST_F(MaterialDriver, theHoopStrainOfAnAxisymmetricRingLoadsEveryModelThroughIt
         EXPECT_NEAR(t["sigma12"].back(), 0.0, 1e-9 * scale);
     }
 }
+
+#if GPIC_WITH_3D
+TEST_F(MaterialDriver, threeDTriaxialMohrCoulombFailsAtThePassiveRatioAndTheOedometerIsThePlaneOne)
+{
+    // geometry threeD: the 3D model. A Mohr-Coulomb point (phi 30, psi 0, c 0) compressed
+    // axially with its lateral stresses held at -100 kPa (the triaxial test) fails at
+    // sigma22 = -100 kPa (1 + sin phi) / (1 - sin phi) = -300 kPa and stays there (to 1e-6);
+    // the 3D oedometer ends where the plane one does (its two lateral stresses alike, 1e-9),
+    // and a 3D general path controls a stress out of the plane (sigma33 held at -50 kPa).
+    std::ofstream(dir / "constant/materials")
+        << "FoamFile { version 2.0; format ascii; class dictionary; object materials; }\n"
+           "sand { type mohrCoulomb; rho 2000; E 1e7; nu 0.3; phi 30; psi 0; c 0; }\n";
+    const std::string tests = "triaxial { path biaxial; strain -0.03; confining 100e3; steps 3000; }\n"
+                              "oedometer { path oedometer; strain -0.01; steps 1000; }\n"
+                              "general { path general; eps22 -0.001; sigma33 -50e3; eps23 0.0002; steps 100; }\n";
+    writeDict(tests, "material sand;\ngeometry threeD;\n");
+    run();
+    const Table triaxial = result("triaxial"), solid = result("oedometer"), general = result("general");
+    ASSERT_EQ(triaxial.at("sigma22").size(), 3001u);
+    ASSERT_TRUE(triaxial.count("sigma23") && triaxial.count("eps33")) << "the 3D columns";
+    EXPECT_NEAR(triaxial.at("sigma22").back(), -300e3, 0.3);
+    EXPECT_NEAR(triaxial.at("sigma11").back(), -100e3, 1e-4);
+    EXPECT_NEAR(triaxial.at("sigma33").back(), -100e3, 1e-4);
+    EXPECT_NEAR(general.at("sigma33").back(), -50e3, 1e-4);
+    EXPECT_GT(std::abs(general.at("sigma23").back()), 1.0) << "eps23 imposed: a shear stress out of the plane";
+
+    writeDict("oedometer { path oedometer; strain -0.01; steps 1000; }\n", "material sand;\n");
+    run();
+    const Table plane = result("oedometer");
+    for (const char* s : {"sigma11", "sigma22", "sigma33"})
+        EXPECT_NEAR(solid.at(s).back(), plane.at(s).back(), 1e-9 * std::abs(plane.at("sigma22").back())) << s;
+    EXPECT_NEAR(solid.at("sigma11").back(), solid.at("sigma33").back(), 1e-9 * std::abs(plane.at("sigma22").back()));
+}
+#endif

@@ -119,6 +119,8 @@ template <int D> void PrescribedVelocityDriver<D>::advance(double t, double dt, 
 }
 
 template class PrescribedVelocityDriver<2>;
+#if GPIC_WITH_3D
 template class PrescribedVelocityDriver<3>;
+#endif
 
 } // namespace gpic

@@ -166,6 +166,8 @@ template <int D> void DruckerPrager<D>::updateStress(Particles<D>& p, const Part
 }
 
 template class DruckerPrager<2>;
+#if GPIC_WITH_3D
 template class DruckerPrager<3>;
+#endif
 
 } // namespace gpic

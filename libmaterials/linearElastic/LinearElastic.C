@@ -26,6 +26,8 @@ template <int D> void LinearElastic<D>::updateStress(Particles<D>& p, const Part
 }
 
 template class LinearElastic<2>;
+#if GPIC_WITH_3D
 template class LinearElastic<3>;
+#endif
 
 } // namespace gpic

@@ -209,6 +209,8 @@ template <int D> void MohrCoulomb<D>::updateStress(Particles<D>& p, const Partic
 }
 
 template class MohrCoulomb<2>;
+#if GPIC_WITH_3D
 template class MohrCoulomb<3>;
+#endif
 
 } // namespace gpic

@@ -50,6 +50,8 @@ template <int D> void VonMises<D>::updateStress(Particles<D>& p, const ParticleB
 }
 
 template class VonMises<2>;
+#if GPIC_WITH_3D
 template class VonMises<3>;
+#endif
 
 } // namespace gpic

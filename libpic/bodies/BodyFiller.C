@@ -175,7 +175,9 @@ FilledBodies<D> fillBodies(const Dictionary& bodiesDict, const Grid<D>& grid,
 
 template FilledBodies<2> fillBodies(const Dictionary&, const Grid<2>&, const std::vector<std::unique_ptr<Material<2>>>&,
                                     const Space<2>::Vector&, const std::array<bool, Space<2>::nFaces>&);
+#if GPIC_WITH_3D
 template FilledBodies<3> fillBodies(const Dictionary&, const Grid<3>&, const std::vector<std::unique_ptr<Material<3>>>&,
                                     const Space<3>::Vector&, const std::array<bool, Space<3>::nFaces>&);
+#endif
 
 } // namespace gpic

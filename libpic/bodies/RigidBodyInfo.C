@@ -35,6 +35,8 @@ std::vector<RigidBodyInfo<D>> RigidBodyInfo<D>::ofBodies(const Particles<D>& p, 
 }
 
 template class RigidBodyInfo<2>;
+#if GPIC_WITH_3D
 template class RigidBodyInfo<3>;
+#endif
 
 } // namespace gpic

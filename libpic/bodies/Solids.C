@@ -98,9 +98,11 @@ private:
     double zMin_, zMax_;
 };
 
+#if GPIC_WITH_3D
 GPIC_REGISTER(Shape<3>, BoxShape, "box")
 GPIC_REGISTER(Shape<3>, SphereShape, "sphere")
 GPIC_REGISTER(Shape<3>, CylinderShape, "cylinder")
 GPIC_REGISTER(Shape<3>, ExtrudedPolygonShape, "extrudedPolygon")
+#endif
 
 } // namespace gpic

@@ -126,7 +126,9 @@ template <int D> std::array<TimeFunction, D> TimeFunction::readVector(const Dict
 }
 
 template std::array<TimeFunction, 2> TimeFunction::readVector<2>(const Dictionary&, const std::string&);
+#if GPIC_WITH_3D
 template std::array<TimeFunction, 3> TimeFunction::readVector<3>(const Dictionary&, const std::string&);
+#endif
 
 double TimeFunction::value(double t) const
 {

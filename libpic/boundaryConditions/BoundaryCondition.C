@@ -26,10 +26,16 @@ void SlipBoundary<D>::constrain(std::vector<typename Space<D>::Vector>& field, c
 }
 
 template class BoundaryCondition<2>;
+#if GPIC_WITH_3D
 template class BoundaryCondition<3>;
+#endif
 template class FixedBoundary<2>;
+#if GPIC_WITH_3D
 template class FixedBoundary<3>;
+#endif
 template class SlipBoundary<2>;
+#if GPIC_WITH_3D
 template class SlipBoundary<3>;
+#endif
 
 } // namespace gpic

@@ -39,6 +39,8 @@ void FrictionalWall<D>::constrainUpdate(std::vector<Vector>& velocity, std::vect
 }
 
 template class FrictionalWall<2>;
+#if GPIC_WITH_3D
 template class FrictionalWall<3>;
+#endif
 
 } // namespace gpic

@@ -80,6 +80,8 @@ template <int D> bool GridSides<D>::keepInsideWalls(const Grid<D>& grid, Vector&
 }
 
 template class GridSides<2>;
+#if GPIC_WITH_3D
 template class GridSides<3>;
+#endif
 
 } // namespace gpic

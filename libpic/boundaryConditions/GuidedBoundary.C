@@ -15,6 +15,8 @@ void GuidedBoundary<D>::constrain(std::vector<typename Space<D>::Vector>& field,
 }
 
 template class GuidedBoundary<2>;
+#if GPIC_WITH_3D
 template class GuidedBoundary<3>;
+#endif
 
 } // namespace gpic

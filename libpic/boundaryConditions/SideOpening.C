@@ -36,6 +36,8 @@ template <int D> SideOpening<D>::SideOpening(const Dictionary& dict)
 }
 
 template class SideOpening<2>;
+#if GPIC_WITH_3D
 template class SideOpening<3>;
+#endif
 
 } // namespace gpic

@@ -182,6 +182,13 @@ int caseDimension(const Dictionary& gridDict)
     return 2;
 }
 
+void refusePlaneBuild(const Dictionary& gridDict)
+{
+    gridDict.fail(gridDict.found("nCells") ? "nCells" : "geometry",
+                  "constant/grid describes a 3D scene, and this build has the plane engine only (configured with "
+                  "GPIC_DIMENSIONS 2): rebuild with cmake -DGPIC_DIMENSIONS=\"2;3\" (the default)");
+}
+
 #define GPIC_CASE_FILES(D)                                                                                     \
     template std::vector<std::unique_ptr<Material<D>>> readMaterials<D>(const Dictionary&);                    \
     template std::array<std::unique_ptr<BoundaryCondition<D>>, Space<D>::nFaces> readBoundaries<D>(const Dictionary&); \
@@ -191,7 +198,9 @@ int caseDimension(const Dictionary& gridDict)
     template Space<D>::Vector readGravity<D>(const std::string&);                                              \
     template std::vector<std::string> materialNames<D>(const std::vector<std::unique_ptr<Material<D>>>&);
 GPIC_CASE_FILES(2)
+#if GPIC_WITH_3D
 GPIC_CASE_FILES(3)
+#endif
 #undef GPIC_CASE_FILES
 
 } // namespace gpic

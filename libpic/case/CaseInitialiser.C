@@ -71,7 +71,13 @@ InitialiseSummary initialiseCase(const std::string& dir, bool overwrite)
     const Dictionary control = readCaseFile(dir, "system/controlDict");
     Plugins::open(control, "libs");
     Dictionary gridDict = readCaseFile(dir, "constant/grid");
-    if (caseDimension(gridDict) == 3) return initialise<3>(dir, overwrite, control, std::move(gridDict));
+    if (caseDimension(gridDict) == 3) {
+#if GPIC_WITH_3D
+        return initialise<3>(dir, overwrite, control, std::move(gridDict));
+#else
+        refusePlaneBuild(gridDict);
+#endif
+    }
     return initialise<2>(dir, overwrite, control, std::move(gridDict));
 }
 

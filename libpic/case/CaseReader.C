@@ -233,8 +233,12 @@ template <int D> std::unique_ptr<Case<D>> readCase(const RunOptions& options)
 }
 
 template struct Case<2>;
+#if GPIC_WITH_3D
 template struct Case<3>;
+#endif
 template std::unique_ptr<Case<2>> readCase<2>(const RunOptions&);
+#if GPIC_WITH_3D
 template std::unique_ptr<Case<3>> readCase<3>(const RunOptions&);
+#endif
 
 } // namespace gpic

@@ -58,6 +58,8 @@ std::unique_ptr<ContactPass<D>> ContactPass<D>::New(const Dictionary& dict, cons
 }
 
 template class ContactPass<2>;
+#if GPIC_WITH_3D
 template class ContactPass<3>;
+#endif
 
 } // namespace gpic

@@ -40,6 +40,8 @@ template <int D>
 void GridCoupling<D>::forEachRigidNode(const Grid<D>&, const Drivers&, const std::function<void(int, int)>&) const {}
 
 template class GridCoupling<2>;
+#if GPIC_WITH_3D
 template class GridCoupling<3>;
+#endif
 
 } // namespace gpic

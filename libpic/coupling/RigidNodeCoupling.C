@@ -57,6 +57,8 @@ void RigidNodeCoupling<D>::update(Grid<D>& grid, const Drivers& rigid, double tN
 }
 
 template class RigidNodeCoupling<2>;
+#if GPIC_WITH_3D
 template class RigidNodeCoupling<3>;
+#endif
 
 } // namespace gpic

@@ -96,6 +96,8 @@ void SingleField<D>::remapVelocity(EngineView<D>& e, double tNew, double dt)
 }
 
 template class SingleField<2>;
+#if GPIC_WITH_3D
 template class SingleField<3>;
+#endif
 
 } // namespace gpic

@@ -33,6 +33,8 @@ void SingleFieldRigidBodies<D>::forEachRigidNode(const Grid<D>& grid, const type
 }
 
 template class SingleFieldRigidBodies<2>;
+#if GPIC_WITH_3D
 template class SingleFieldRigidBodies<3>;
+#endif
 
 } // namespace gpic

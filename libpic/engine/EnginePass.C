@@ -17,5 +17,7 @@ std::vector<std::unique_ptr<EnginePass<D>>> assemblePasses(PassScene<D>& scene)
 }
 
 template std::vector<std::unique_ptr<EnginePass<2>>> assemblePasses(PassScene<2>&);
+#if GPIC_WITH_3D
 template std::vector<std::unique_ptr<EnginePass<3>>> assemblePasses(PassScene<3>&);
+#endif
 } // namespace gpic

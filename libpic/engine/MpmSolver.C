@@ -644,6 +644,8 @@ std::size_t MpmSolver<D>::removeOutflow()
 }
 
 template class MpmSolver<2>;
+#if GPIC_WITH_3D
 template class MpmSolver<3>;
+#endif
 
 } // namespace gpic

@@ -39,10 +39,16 @@ void MpmSolver<D>::refreshOpenings()
 }
 
 template void MpmSolver<2>::replaceParticles(Particles<2>);
+#if GPIC_WITH_3D
 template void MpmSolver<3>::replaceParticles(Particles<3>);
+#endif
 template void MpmSolver<2>::projectToGrid();
+#if GPIC_WITH_3D
 template void MpmSolver<3>::projectToGrid();
+#endif
 template void MpmSolver<2>::refreshOpenings();
+#if GPIC_WITH_3D
 template void MpmSolver<3>::refreshOpenings();
+#endif
 
 } // namespace gpic

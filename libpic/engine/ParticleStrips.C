@@ -128,6 +128,8 @@ void ParticleStrips<D>::assign(const Grid<D>& grid, const Particles<D>& p)
 }
 
 template class ParticleStrips<2>;
+#if GPIC_WITH_3D
 template class ParticleStrips<3>;
+#endif
 
 } // namespace gpic

@@ -58,6 +58,8 @@ void BodyMotion<D>::write(const MpmSolver<D>& solver, double time)
 }
 
 template class BodyMotion<2>;
+#if GPIC_WITH_3D
 template class BodyMotion<3>;
+#endif
 
 } // namespace gpic

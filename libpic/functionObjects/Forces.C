@@ -161,6 +161,8 @@ template <int D>
 void Forces<D>::readState(const Dictionary& state) { work_ = state.getOrDefault<std::vector<double>>("work", {}); }
 
 template class Forces<2>;
+#if GPIC_WITH_3D
 template class Forces<3>;
+#endif
 
 } // namespace gpic

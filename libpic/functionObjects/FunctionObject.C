@@ -74,6 +74,8 @@ std::unique_ptr<FunctionObject<D>> FunctionObject<D>::New(const Dictionary& dict
 }
 
 template class FunctionObject<2>;
+#if GPIC_WITH_3D
 template class FunctionObject<3>;
+#endif
 
 } // namespace gpic

@@ -92,6 +92,8 @@ void MassFlow<D>::write(const MpmSolver<D>& solver, double time)
 }
 
 template class MassFlow<2>;
+#if GPIC_WITH_3D
 template class MassFlow<3>;
+#endif
 
 } // namespace gpic

@@ -151,6 +151,8 @@ template <int D> std::vector<int> Grid<D>::sideNodes(GridSide side) const
 }
 
 template class Grid<2>;
+#if GPIC_WITH_3D
 template class Grid<3>;
+#endif
 
 } // namespace gpic

@@ -72,7 +72,9 @@ template <int D> void writeGrid(const std::string& path, const Grid<D>& g, doubl
 }
 
 template void writeGrid(const std::string&, const Grid<2>&, double);
+#if GPIC_WITH_3D
 template void writeGrid(const std::string&, const Grid<3>&, double);
+#endif
 
 vtkSmartPointer<vtkImageData> readGridImage(const std::string& path, const std::string& hint)
 {

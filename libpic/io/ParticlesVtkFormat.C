@@ -12,8 +12,10 @@ bool isBuiltinParticleArray(const std::string& name)
     // a history variable.
     for (const ParticleField<2>& f : particleFields<2>())
         if (*f.name && name == f.name) return true;
+#if GPIC_WITH_3D
     for (const ParticleField<3>& f : particleFields<3>())
         if (*f.name && name == f.name) return true;
+#endif
     return false;
 }
 

@@ -276,7 +276,9 @@ void readParticles(const std::string& path, Particles<D>& p, double& time,
 
 template void readParticles(const std::string&, Particles<2>&, double&, std::vector<std::string>*,
                             std::vector<std::string>*);
+#if GPIC_WITH_3D
 template void readParticles(const std::string&, Particles<3>&, double&, std::vector<std::string>*,
                             std::vector<std::string>*);
+#endif
 
 } // namespace gpic

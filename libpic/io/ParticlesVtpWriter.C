@@ -428,7 +428,9 @@ void writeParticles(const std::string& path, const Particles<D>& p, double time,
 
 template void writeParticles(const std::string&, const Particles<2>&, double, const std::vector<std::string>&,
                              const std::vector<std::string>&);
+#if GPIC_WITH_3D
 template void writeParticles(const std::string&, const Particles<3>&, double, const std::vector<std::string>&,
                              const std::vector<std::string>&);
+#endif
 
 } // namespace gpic

@@ -55,6 +55,8 @@ void AppliedLoads<D>::renumber(const std::vector<std::size_t>& newIndex, std::si
 }
 
 template class AppliedLoads<2>;
+#if GPIC_WITH_3D
 template class AppliedLoads<3>;
+#endif
 
 } // namespace gpic

@@ -30,6 +30,8 @@ template <int D> std::unique_ptr<Material<D>> Material<D>::New(const Dictionary&
 }
 
 template class Material<2>;
+#if GPIC_WITH_3D
 template class Material<3>;
+#endif
 
 } // namespace gpic

@@ -91,6 +91,8 @@ template <int D> const std::vector<ParticleField<D>>& particleFields()
 }
 
 template const std::vector<ParticleField<2>>& particleFields<2>();
+#if GPIC_WITH_3D
 template const std::vector<ParticleField<3>>& particleFields<3>();
+#endif
 
 } // namespace gpic

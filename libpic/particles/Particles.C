@@ -160,6 +160,8 @@ template <int D> std::size_t Particles<D>::bytes() const
 }
 
 template class Particles<2>;
+#if GPIC_WITH_3D
 template class Particles<3>;
+#endif
 
 } // namespace gpic

@@ -402,12 +402,20 @@ void Simulation<D>::reportEnd(double wall, long steps, double particleUpdates)
 }
 
 template class Simulation<2>;
+#if GPIC_WITH_3D
 template class Simulation<3>;
+#endif
 
 long runCase(const RunOptions& options)
 {
     const Dictionary grid = readCaseFile(options.caseDir, "constant/grid");
-    if (caseDimension(grid) == 3) return Simulation<3>(options).run();
+    if (caseDimension(grid) == 3) {
+#if GPIC_WITH_3D
+        return Simulation<3>(options).run();
+#else
+        refusePlaneBuild(grid);
+#endif
+    }
     return Simulation<2>(options).run();
 }
 

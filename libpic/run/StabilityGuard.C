@@ -398,8 +398,12 @@ std::string StabilityGuard<D>::describeOutside(std::size_t q, double t, long ste
 }
 
 template class StabilityGuard<2>;
+#if GPIC_WITH_3D
 template class StabilityGuard<3>;
+#endif
 template struct GoodState<2>;
+#if GPIC_WITH_3D
 template struct GoodState<3>;
+#endif
 
 } // namespace gpic

@@ -54,6 +54,8 @@ void AffineVelocity<D>::at(StepPoint, EngineView<D>& e, double dt)
 }
 
 template class AffineVelocity<2>;
+#if GPIC_WITH_3D
 template class AffineVelocity<3>;
+#endif
 
 } // namespace gpic

@@ -92,6 +92,8 @@ void XpicFilter<D>::at(StepPoint, EngineView<D>& e, double dt)
 }
 
 template class XpicFilter<2>;
+#if GPIC_WITH_3D
 template class XpicFilter<3>;
+#endif
 
 } // namespace gpic

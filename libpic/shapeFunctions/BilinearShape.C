@@ -46,6 +46,8 @@ template <int D> void BilinearShape<D>::evaluate(const Grid<D>& grid, const Part
 }
 
 template class BilinearShape<2>;
+#if GPIC_WITH_3D
 template class BilinearShape<3>;
+#endif
 
 } // namespace gpic

@@ -91,6 +91,8 @@ void QuadraticBSplineShape<D>::evaluate(const Grid<D>& grid, const Particles<D>&
 }
 
 template class QuadraticBSplineShape<2>;
+#if GPIC_WITH_3D
 template class QuadraticBSplineShape<3>;
+#endif
 
 } // namespace gpic

@@ -99,6 +99,8 @@ template <int D> void UGimpShape<D>::evaluate(const Grid<D>& grid, const Particl
 }
 
 template class UGimpShape<2>;
+#if GPIC_WITH_3D
 template class UGimpShape<3>;
+#endif
 
 } // namespace gpic

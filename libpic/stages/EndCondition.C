@@ -175,6 +175,8 @@ void EndCondition<D>::readProgress(const Dictionary& d)
 }
 
 template class EndCondition<2>;
+#if GPIC_WITH_3D
 template class EndCondition<3>;
+#endif
 
 } // namespace gpic

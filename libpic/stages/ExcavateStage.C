@@ -122,7 +122,9 @@ void ExcavateStage<D>::readOwnProgress(const Dictionary& progress)
 }
 
 template class ExcavateStage<2>;
+#if GPIC_WITH_3D
 template class ExcavateStage<3>;
+#endif
 
 
 } // namespace gpic

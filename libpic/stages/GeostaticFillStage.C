@@ -160,6 +160,8 @@ void GeostaticFillStage<D>::readOwnProgress(const Dictionary& progress)
 }
 
 template class GeostaticFillStage<2>;
+#if GPIC_WITH_3D
 template class GeostaticFillStage<3>;
+#endif
 
 } // namespace gpic

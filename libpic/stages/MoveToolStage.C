@@ -35,6 +35,8 @@ MoveToolStage<D>::MoveToolStage(const Dictionary& dict, const StageSetup<D>& set
 }
 
 template class MoveToolStage<2>;
+#if GPIC_WITH_3D
 template class MoveToolStage<3>;
+#endif
 
 } // namespace gpic

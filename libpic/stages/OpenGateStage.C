@@ -13,6 +13,8 @@ OpenGateStage<D>::OpenGateStage(const Dictionary& dict, const StageSetup<D>& set
 }
 
 template class OpenGateStage<2>;
+#if GPIC_WITH_3D
 template class OpenGateStage<3>;
+#endif
 
 } // namespace gpic

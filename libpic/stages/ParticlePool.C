@@ -56,6 +56,8 @@ double ParticlePool<D>::remove(MpmSolver<D>& solver, const Predicate& remove, st
 }
 
 template class ParticlePool<2>;
+#if GPIC_WITH_3D
 template class ParticlePool<3>;
+#endif
 
 } // namespace gpic

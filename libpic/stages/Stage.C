@@ -184,7 +184,9 @@ void Stage<D>::writeProgress(std::ostream& os) const
 }
 
 template class Stage<2>;
+#if GPIC_WITH_3D
 template class Stage<3>;
+#endif
 
 
 } // namespace gpic

@@ -186,6 +186,8 @@ void StageSequence<D>::writeStageFile(const std::string& timeDir, const std::str
 }
 
 template class StageSequence<2>;
+#if GPIC_WITH_3D
 template class StageSequence<3>;
+#endif
 
 } // namespace gpic

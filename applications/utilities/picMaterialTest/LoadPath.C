@@ -2,14 +2,13 @@
 
 #include "dictionary/Dictionary.H"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
 namespace gpic {
 
 namespace {
-
-const char* const componentNames[3] = {"11", "22", "12"};
 
 //- A tensor strain component of this small-strain driver.
 double readStrain(const Dictionary& dict, const std::string& key)
@@ -39,14 +38,26 @@ std::string number(double v)
 
 } // namespace
 
-const std::vector<std::string>& LoadPath::pathNames()
+template <int D> int csvColumn(const std::string& name)
+{
+    static const std::vector<std::string> plane{"step", "eps11", "eps22", "eps12", "sigma11", "sigma22", "sigma33",
+                                                "sigma12", "p", "q"};
+    static const std::vector<std::string> solid{"step", "eps11", "eps22", "eps33", "eps12", "eps23", "eps13",
+                                                "sigma11", "sigma22", "sigma33", "sigma12", "sigma23", "sigma13",
+                                                "p", "q"};
+    const auto& names = D == 2 ? plane : solid;
+    return static_cast<int>(std::find(names.begin(), names.end(), name) - names.begin()) + 1;
+}
+
+template <int D> const std::vector<std::string>& LoadPath<D>::pathNames()
 {
     static const std::vector<std::string> names{"oedometer", "biaxial", "simpleShear", "rotation",
                                                 "general"};
     return names;
 }
 
-LoadPath::LoadPath(const Dictionary& dict)
+template <int D>
+LoadPath<D>::LoadPath(const Dictionary& dict)
     : type_(dict.getWord("path", pathNames())),
       steps_(dict.getChecked<int>("steps", [](const int& n) { return n >= 1 && n <= 100000000; },
                                   "1 <= steps <= 100000000"))
@@ -62,6 +73,7 @@ LoadPath::LoadPath(const Dictionary& dict)
             "confining >= 0 (the lateral compressive stress, Pa)");
         stressControlled_[0] = true;
         sigmaEnd_[XX] = -confining;
+        if constexpr (D == 3) sigmaEnd_[ZZ] = -confining;  // the triaxial test: eps33 follows eps11
         held_ = true;
     } else if (type_ == "simpleShear") {
         const double gamma = dict.getChecked<double>(
@@ -78,12 +90,12 @@ LoadPath::LoadPath(const Dictionary& dict)
     }
 }
 
-void LoadPath::readGeneral(const Dictionary& dict)
+template <int D> void LoadPath<D>::readGeneral(const Dictionary& dict)
 {
-    for (int c = 0; c < 3; ++c) {
-        const std::string epsKey = std::string("eps") + componentNames[c];
-        const std::string sigmaKey = std::string("sigma") + componentNames[c];
-        const int k = controlledComponents[c];
+    for (int c = 0; c < Controlled<D>::n; ++c) {
+        const std::string epsKey = std::string("eps") + Controlled<D>::name(c);
+        const std::string sigmaKey = std::string("sigma") + Controlled<D>::name(c);
+        const int k = Controlled<D>::component()[c];
         if (dict.found(sigmaKey)) {
             if (dict.found(epsKey))
                 dict.fail(sigmaKey, "give either " + epsKey + " or " + sigmaKey + " in test " +
@@ -96,33 +108,38 @@ void LoadPath::readGeneral(const Dictionary& dict)
     }
     // A ring of an axisymmetric scene stretches around the axis: eps33 is then the hoop strain,
     // imposed (doc/axisymmetric.md); without it the point is in plane strain.
-    if (dict.found("eps33")) strain_[ZZ] = readStrain(dict, "eps33");
+    if (D == 2 && dict.found("eps33")) strain_[ZZ] = readStrain(dict, "eps33");
     if (dict.found("angle"))
         omega_ = spinOfRotation(readFinite(dict, "angle", "angle in degrees (anticlockwise)"));
 }
 
-SymTensor LoadPath::defaultStartStress() const
+template <int D> typename Space<D>::SymTensor LoadPath<D>::defaultStartStress() const
 {
-    if (type_ != "biaxial") return SymTensor::Zero();
-    const double p = sigmaEnd_[XX];
-    return SymTensor(p, p, p, 0.0);
+    SymTensor s = SymTensor::Zero();
+    if (type_ == "biaxial")
+        for (int a = 0; a < 3; ++a) s[a] = sigmaEnd_[XX];
+    return s;
 }
 
-bool LoadPath::hasStressControl() const
+template <int D> bool LoadPath<D>::hasStressControl() const
 {
-    return stressControlled_[0] || stressControlled_[1] || stressControlled_[2];
+    for (bool c : stressControlled_)
+        if (c) return true;
+    return false;
 }
 
-StepControl LoadPath::step(int n, const SymTensor& startStress) const
+template <int D> StepControl<D> LoadPath<D>::step(int n, const SymTensor& startStress) const
 {
-    StepControl control;
+    StepControl<D> control;
     control.dEps = strain_ / steps_;
-    control.dOmega = omega_ / steps_;
+    if constexpr (D == 2) control.dOmega = omega_ / steps_;
+    else control.dOmega = typename Space<D>::Spin(omega_ / steps_, 0.0, 0.0);  // w12: about e3
     control.stressControlled = stressControlled_;
+    control.eps33FollowsEps11 = D == 3 && type_ == "biaxial";
     const double fraction = static_cast<double>(n) / steps_;
-    for (int c = 0; c < 3; ++c) {
+    for (int c = 0; c < Controlled<D>::n; ++c) {
         if (!stressControlled_[c]) continue;
-        const int k = controlledComponents[c];
+        const int k = Controlled<D>::component()[c];
         control.dEps[k] = 0;
         control.sigmaTarget[k] =
             held_ ? sigmaEnd_[k] : startStress[k] + fraction * (sigmaEnd_[k] - startStress[k]);
@@ -130,39 +147,49 @@ StepControl LoadPath::step(int n, const SymTensor& startStress) const
     return control;
 }
 
-NaturalAxes LoadPath::naturalAxes() const
+template <int D> NaturalAxes LoadPath<D>::naturalAxes() const
 {
     NaturalAxes axes;
+    const auto col = [](const char* name) { return "$" + std::to_string(csvColumn<D>(name)); };
+    axes.pColumn = csvColumn<D>("p");
+    axes.qColumn = csvColumn<D>("q");
     const std::string s = axialSign_ < 0 ? "-" : "";
     const std::string compression = axialSign_ < 0 ? ", compression positive" : "";
     if (type_ == "oedometer") {
-        axes.xExpression = s + "$3";
+        axes.xExpression = s + col("eps22");
         axes.xLabel = s + "eps22 [-]";
-        axes.curves = {{s + "$6", s + "sigma22"}, {s + "$5", s + "sigma11"}, {s + "$7", s + "sigma33"}};
+        axes.curves = {{s + col("sigma22"), s + "sigma22"}, {s + col("sigma11"), s + "sigma11"}, {s + col("sigma33"), s + "sigma33"}};
         axes.yLabel = "stress [Pa]" + compression;
     } else if (type_ == "biaxial") {
-        axes.xExpression = s + "$3";
+        axes.xExpression = s + col("eps22");
         axes.xLabel = s + "eps22 (axial strain) [-]";
-        axes.curves = {{s + "($6-$5)", s + "(sigma22 - sigma11) (deviator)"},
-                       {s + "$5", s + "sigma11 (lateral, held)"}};
+        axes.curves = {{s + "(" + col("sigma22") + "-" + col("sigma11") + ")", s + "(sigma22 - sigma11) (deviator)"},
+                       {s + col("sigma11"), s + "sigma11 (lateral, held)"}};
         axes.yLabel = "stress [Pa]" + compression;
     } else if (type_ == "simpleShear") {
-        axes.xExpression = "2*$4";
+        axes.xExpression = "2*" + col("eps12");
         axes.xLabel = "gamma = 2 eps12 [-]";
-        axes.curves = {{"$8", "sigma12"}, {"$5", "sigma11"}, {"$6", "sigma22"}};
+        axes.curves = {{col("sigma12"), "sigma12"}, {col("sigma11"), "sigma11"}, {col("sigma22"), "sigma22"}};
         axes.yLabel = "stress [Pa]";
     } else if (type_ == "rotation") {
-        axes.xExpression = "$1*" + number(-omega_ * 180.0 / M_PI / steps_);
+        axes.xExpression = col("step") + "*" + number(-omega_ * 180.0 / M_PI / steps_);
         axes.xLabel = "angle turned (anticlockwise) [deg]";
-        axes.curves = {{"$5", "sigma11"}, {"$6", "sigma22"}, {"$8", "sigma12"}, {"$7", "sigma33"}};
+        axes.curves = {{col("sigma11"), "sigma11"}, {col("sigma22"), "sigma22"}, {col("sigma12"), "sigma12"}, {col("sigma33"), "sigma33"}};
         axes.yLabel = "stress [Pa]";
     } else {
-        axes.xExpression = "$1";
+        axes.xExpression = col("step");
         axes.xLabel = "step";
-        axes.curves = {{"$5", "sigma11"}, {"$6", "sigma22"}, {"$7", "sigma33"}, {"$8", "sigma12"}};
+        axes.curves = {{col("sigma11"), "sigma11"}, {col("sigma22"), "sigma22"}, {col("sigma33"), "sigma33"}, {col("sigma12"), "sigma12"}};
         axes.yLabel = "stress [Pa]";
     }
     return axes;
 }
+
+template class LoadPath<2>;
+template int csvColumn<2>(const std::string&);
+#if GPIC_WITH_3D
+template class LoadPath<3>;
+template int csvColumn<3>(const std::string&);
+#endif
 
 } // namespace gpic

@@ -27,7 +27,7 @@ bool plotPath(const std::string& csvPath, const std::string& pngPath, const std:
                << axes.curves[i].expression << ")" << marks << " title " << gnuplotQuoted(axes.curves[i].title);
     script << "\nset xlabel 'p = -(sigma11 + sigma22 + sigma33)/3 [Pa]'\n"
            << "set ylabel 'q = sqrt(3 J2) [Pa]'\n"
-           << "plot " << data << " using 9:10" << marks << " title 'stress path'\n"
+           << "plot " << data << " using " << axes.pColumn << ':' << axes.qColumn << marks << " title 'stress path'\n"
            << "unset multiplot\n";
 
     return runGnuplot(script.str(), pngPath, "the CSV " + csvPath);

@@ -12,28 +12,36 @@
 namespace gpic {
 
 namespace {
-const char* const componentName[4] = {"sigma11", "sigma22", "sigma33", "sigma12"};
+//- "sigma11" ... by SymTensor component.
+std::string componentName(int k)
+{
+    static const char* const names[6] = {"sigma11", "sigma22", "sigma33", "sigma12", "sigma23", "sigma13"};
+    return names[k];
 }
+} // namespace
 
-StepSolver::StepSolver(double tolerance, int maxIterations)
+template <int D>
+StepSolver<D>::StepSolver(double tolerance, int maxIterations)
     : tolerance_(tolerance), maxIterations_(maxIterations)
 {}
 
-int StepSolver::advance(MaterialPoint& point, const StepControl& control, double dt)
+template <int D> int StepSolver<D>::advance(MaterialPoint<D>& point, const StepControl<D>& control, double dt)
 {
     std::vector<int> unknown;  // SymTensor components whose increment is sought
-    for (int c = 0; c < 3; ++c)
-        if (control.stressControlled[c]) unknown.push_back(controlledComponents[c]);
+    for (int c = 0; c < Controlled<D>::n; ++c)
+        if (control.stressControlled[c]) unknown.push_back(Controlled<D>::component()[c]);
     if (unknown.empty()) {
         point.apply(control.dEps, control.dOmega, dt);
         return 0;
     }
+    const bool tied = control.eps33FollowsEps11;
     const int n = static_cast<int>(unknown.size());
 
     // A trial step from the start of the step with increments x for the unknowns.
-    auto trial = [&](const Eigen::VectorXd& x, MaterialPoint& result, Eigen::VectorXd& r) {
+    auto trial = [&](const Eigen::VectorXd& x, MaterialPoint<D>& result, Eigen::VectorXd& r) {
         SymTensor dEps = control.dEps;
         for (int i = 0; i < n; ++i) dEps[unknown[i]] = x[i];
+        if (tied) dEps[ZZ] = dEps[XX];
         result = point;
         result.apply(dEps, control.dOmega, dt);
         r.resize(n);
@@ -47,7 +55,7 @@ int StepSolver::advance(MaterialPoint& point, const StepControl& control, double
 
     Eigen::VectorXd x(n), r, rTry;
     for (int i = 0; i < n; ++i) x[i] = lastIncrement_[unknown[i]];
-    MaterialPoint current = point, attempt = point;
+    MaterialPoint<D> current = point, attempt = point;
     trial(x, current, r);
 
     for (int iteration = 0; iteration <= maxIterations_; ++iteration) {
@@ -73,7 +81,7 @@ int StepSolver::advance(MaterialPoint& point, const StepControl& control, double
         const Eigen::FullPivLU<Eigen::MatrixXd> lu(J);
         if (!J.allFinite() || !lu.isInvertible()) {
             std::ostringstream msg;
-            msg << "the stress cannot be controlled: " << componentName[unknown[0]]
+            msg << "the stress cannot be controlled: " << componentName(unknown[0])
                 << (n > 1 ? " and the other stress-controlled components do" : " does")
                 << " not change with the strain (a perfectly plastic or failed state?)";
             throw RunError(msg.str());
@@ -99,10 +107,15 @@ int StepSolver::advance(MaterialPoint& point, const StepControl& control, double
         if (!(std::abs(r[i]) <= std::abs(r[worst]))) worst = i;
     std::ostringstream msg;
     msg << "the stress control did not converge in " << maxIterations_ << " iterations: "
-        << componentName[unknown[worst]] << " misses its target " << control.sigmaTarget[unknown[worst]]
+        << componentName(unknown[worst]) << " misses its target " << control.sigmaTarget[unknown[worst]]
         << " Pa by " << r[worst] << " Pa (allowed " << allowed
         << " Pa; raise maxIterations or tolerance, or take more steps)";
     throw RunError(msg.str());
 }
+
+template class StepSolver<2>;
+#if GPIC_WITH_3D
+template class StepSolver<3>;
+#endif
 
 } // namespace gpic

@@ -5,6 +5,8 @@
 //
 //     material      sand;              // from constant/materials, or { type ...; rho ...; }
 //     initialStress (0 0 0 0);         // sigma11 sigma22 sigma33 sigma12 [Pa], tension positive
+//     geometry      planeStrain;       // or threeD: every stress and strain component, the
+//                                      // 3D model (initialStress then has six: ... s12 s23 s13)
 //     tests
 //     {
 //         oedometer { path oedometer; strain -0.03; steps 3000; }
@@ -40,11 +42,11 @@ using namespace gpic;
 namespace fs = std::filesystem;
 
 //- One test, read and checked before any runs.
-struct TestSetup {
+template <int D> struct TestSetup {
     std::string name;
-    std::shared_ptr<const Material<2>> material;
-    LoadPath path;
-    SymTensor startStress;
+    std::shared_ptr<const Material<D>> material;
+    LoadPath<D> path;
+    typename Space<D>::SymTensor startStress;
     double deltaT;
     double tolerance;
     int maxIterations;
@@ -57,18 +59,19 @@ const Dictionary& holder(const Dictionary& test, const Dictionary& top, const st
 }
 
 //- The materials named so far, built once each, and constant/materials once it is read.
-struct MaterialLibrary {
+template <int D> struct MaterialLibrary {
     std::optional<Dictionary> file;
-    std::map<std::string, std::shared_ptr<const Material<2>>> byName;
+    std::map<std::string, std::shared_ptr<const Material<D>>> byName;
 };
 
-std::shared_ptr<const Material<2>> selectMaterial(const Dictionary& dict, const std::string& caseDir,
-                                               MaterialLibrary& library)
+template <int D>
+std::shared_ptr<const Material<D>> selectMaterial(const Dictionary& dict, const std::string& caseDir,
+                                                  MaterialLibrary<D>& library)
 {
     if (!dict.found("material"))
         dict.fail("material", "keyword 'material' is undefined in dictionary " + dict.name() +
                                   "; give a name from constant/materials or { type ...; }");
-    if (dict.isDict("material")) return Material<2>::New(dict.subDict("material"));
+    if (dict.isDict("material")) return Material<D>::New(dict.subDict("material"));
     const std::string name = dict.get<std::string>("material");
     if (library.byName.count(name)) return library.byName[name];
     if (!library.file) library.file = readCaseFile(caseDir, "constant/materials");
@@ -80,7 +83,7 @@ std::shared_ptr<const Material<2>> selectMaterial(const Dictionary& dict, const 
         dict.fail("material", "material '" + name + "' is not in constant/materials; valid choices: " +
                                   valid);
     }
-    std::shared_ptr<const Material<2>> material = Material<2>::New(materials.subDict(name));
+    std::shared_ptr<const Material<D>> material = Material<D>::New(materials.subDict(name));
     materials.subDict(name).warnUnused();
     return library.byName[name] = material;
 }
@@ -92,28 +95,33 @@ T optionalChecked(const Dictionary& dict, const std::string& key, const T& deflt
     return dict.found(key) ? dict.getChecked<T>(key, valid, requirement) : deflt;
 }
 
-SymTensor readStress(const Dictionary& dict, const std::string& key)
+template <int D> typename Space<D>::SymTensor readStress(const Dictionary& dict, const std::string& key)
 {
     const auto v = dict.get<std::vector<double>>(key);
-    bool finite = v.size() == 4;
+    bool finite = v.size() == Space<D>::nSym;
     for (double x : v) finite = finite && std::isfinite(x);
     if (!finite)
-        dict.fail(key, key + " needs four finite values (sigma11 sigma22 sigma33 sigma12) in Pa, "
-                             "tension positive");
-    return SymTensor(v[0], v[1], v[2], v[3]);
+        dict.fail(key, key + (D == 2 ? " needs four finite values (sigma11 sigma22 sigma33 sigma12)"
+                                     : " needs six finite values (sigma11 sigma22 sigma33 sigma12 sigma23 sigma13)") +
+                           " in Pa, tension positive");
+    typename Space<D>::SymTensor s;
+    for (int k = 0; k < Space<D>::nSym; ++k) s[k] = v[static_cast<std::size_t>(k)];
+    return s;
 }
 
-TestSetup readTest(const std::string& name, const Dictionary& test, const Dictionary& top,
-                   const std::string& caseDir, MaterialLibrary& library)
+template <int D>
+TestSetup<D> readTest(const std::string& name, const Dictionary& test, const Dictionary& top,
+                      const std::string& caseDir, MaterialLibrary<D>& library)
 {
-    auto material = selectMaterial(holder(test, top, "material"), caseDir, library);
-    LoadPath path(test);
-    if (test.found("eps33") && material->needsRotation())
+    auto material = selectMaterial<D>(holder(test, top, "material"), caseDir, library);
+    LoadPath<D> path(test);
+    if (D == 2 && test.found("eps33") && material->needsRotation())
         test.fail("eps33", "eps33 (an axisymmetric ring's hoop strain) is not yet available for the polar material '" +
                                material->name() + "' in test " + name);
     const Dictionary& stressHolder = holder(test, top, "initialStress");
-    const SymTensor start = stressHolder.found("initialStress") ? readStress(stressHolder, "initialStress")
-                                                                : path.defaultStartStress();
+    const typename Space<D>::SymTensor start = stressHolder.found("initialStress")
+                                                   ? readStress<D>(stressHolder, "initialStress")
+                                                   : path.defaultStartStress();
     const double deltaT = optionalChecked<double>(
         holder(test, top, "deltaT"), "deltaT", 1.0, [](const double& v) { return v > 0 && std::isfinite(v); },
         "deltaT > 0 (s; seen by rate-dependent models only)");
@@ -125,23 +133,25 @@ TestSetup readTest(const std::string& name, const Dictionary& test, const Dictio
     return {name, std::move(material), std::move(path), start, deltaT, tolerance, maxIterations};
 }
 
-std::string tensorText(const SymTensor& s)
+template <class SymTensor> std::string tensorText(const SymTensor& s)
 {
     std::ostringstream out;
     out.precision(6);
-    out << '(' << s[XX] << ' ' << s[YY] << ' ' << s[ZZ] << ' ' << s[XY] << ')';
+    out << '(' << s[0];
+    for (int k = 1; k < SymTensor::SizeAtCompileTime; ++k) out << ' ' << s[k];
+    out << ')';
     return out.str();
 }
 
-void runTest(const TestSetup& setup, const fs::path& outputDir)
+template <int D> void runTest(const TestSetup<D>& setup, const fs::path& outputDir)
 {
     const std::string csvPath = (outputDir / (setup.name + ".csv")).string();
     const std::string pngPath = (outputDir / (setup.name + ".png")).string();
     const auto start = std::chrono::steady_clock::now();
 
-    MaterialPoint point(*setup.material, setup.startStress);
-    StepSolver solver(setup.tolerance, setup.maxIterations);
-    PointHistoryFile csv(csvPath, point);
+    MaterialPoint<D> point(*setup.material, setup.startStress);
+    StepSolver<D> solver(setup.tolerance, setup.maxIterations);
+    PointHistoryFile<D> csv(csvPath, point);
     csv.write(0, point);
     int mostIterations = 0;
     for (int n = 1; n <= setup.path.steps(); ++n) {
@@ -177,18 +187,16 @@ void runTest(const TestSetup& setup, const fs::path& outputDir)
     std::cout << "    wrote " << csvPath << (plotted ? ", " + pngPath : std::string()) << '\n';
 }
 
-void run(const std::string& caseDir, const std::string& dictPath)
+template <int D> void runTests(const std::string& caseDir, const std::string& dictPath, const Dictionary& dict)
 {
-    const Dictionary dict = readCaseFile(caseDir, dictPath);
-    Plugins::open(dict, "libs");
     const Dictionary& tests = dict.subDict("tests");
-    MaterialLibrary library;
-    std::vector<TestSetup> setups;
+    MaterialLibrary<D> library;
+    std::vector<TestSetup<D>> setups;
     for (const auto& name : tests.keys()) {
         if (!tests.isDict(name))
             tests.fail(name, "'" + name + "' is not a test sub-dictionary { path " +
                                  "oedometer|biaxial|simpleShear|rotation|general; ... }");
-        setups.push_back(readTest(name, tests.subDict(name), dict, caseDir, library));
+        setups.push_back(readTest<D>(name, tests.subDict(name), dict, caseDir, library));
     }
     if (setups.empty()) tests.fail("", "no test is defined in " + tests.name());
     dict.warnUnused();
@@ -199,6 +207,24 @@ void run(const std::string& caseDir, const std::string& dictPath)
     if (ec) throw RunError("cannot create " + outputDir.string() + ": " + ec.message());
     std::cout << "picMaterialTest: " << setups.size() << " test(s) from " << dictPath << '\n';
     for (const auto& setup : setups) runTest(setup, outputDir);
+}
+
+void run(const std::string& caseDir, const std::string& dictPath)
+{
+    const Dictionary dict = readCaseFile(caseDir, dictPath);
+    Plugins::open(dict, "libs");
+    // planeStrain: the plane model (eps33 = 0, or an axisymmetric ring's imposed hoop strain);
+    // threeD: the 3D model, every component.
+    if (dict.getWordOrDefault("geometry", {"planeStrain", "threeD"}, "planeStrain") == "threeD") {
+#if GPIC_WITH_3D
+        runTests<3>(caseDir, dictPath, dict);
+        return;
+#else
+        dict.fail("geometry", "geometry threeD needs the 3D engine, and this build has the plane engine only "
+                              "(configured with GPIC_DIMENSIONS 2)");
+#endif
+    }
+    runTests<2>(caseDir, dictPath, dict);
 }
 
 } // namespace
