@@ -10,13 +10,19 @@
 // - the 3D bodies (box, sphere, cylinder on a slanted axis, extruded polygon) hold the
 //   volume of their closed forms, and a geostatic initial stress is vertical along x3;
 // - what is plane-only (polar materials, an axisymmetric grid, plane shapes and function
-//   objects) is refused in a 3D case with one line saying so.
+//   objects) is refused in a 3D case with one line saying so;
+// - every scheme, transfer, shape function, the cell-mean dilatation, damping and mass
+//   scaling of the slab give the plane run; the stages geostaticFill (along -x3), openGate
+//   (a disc in the floor), moveTool and excavate; a rigid body turned about a slanted axis
+//   exactly; a rigid plate's oedometric force; the column collapse as a slab.
 #include "case/CaseFiles.H"
 #include "io/GridVtk.H"
 #include "io/ParticlesVtk.H"
 #include "support/CaseRunner.H"
 
 #include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
 
 #include <cmath>
 #include <fstream>
@@ -476,4 +482,77 @@ TEST(ThreeDCase, theColumnCollapseAsASlabRunsOutAsThePlaneColumnWithin3Percent)
     EXPECT_NEAR(runoutSlab, runoutPlane, 0.03 * runoutPlane);
     EXPECT_LT(a->solver().maxParticleSpeed(), 0.05) << "at rest";
     EXPECT_LT(b->solver().maxParticleSpeed(), 0.05) << "at rest";
+}
+
+TEST(ThreeDCase, aRigidBodyTurnsAboutASlantedAxisThroughAPointExactly)
+{
+    // prescribedVelocity with omega about axis (1 1 1) through the box's centre: after t its
+    // particles are where Rodrigues' rotation by omega t takes them (to 1e-12 m), the body
+    // keeps its shape, and the centre stays put.
+    ScratchDir scratch{"turn3d"};
+    Scene s;
+    s.materials = "tool { type linearElastic; rho 1000; E 1e6; nu 0.3; }\n";
+    s.grid = "origin (0 0 0); cellSize 0.05; nCells (12 12 12);\n"
+             "boundaries { left { type free; } right { type free; } bottom { type free; } top { type free; } "
+             "back { type free; } front { type free; } }\n";
+    s.bodies = "block { material tool; shape { type box; min (0.2 0.25 0.25); max (0.4 0.35 0.35); } "
+               "particlesPerCell 2; }\n";
+    writeDictionary(scratch.path() / "constant/rigidBodies",
+                    "block { type prescribedVelocity; omega 2; centre (0.3 0.3 0.3); axis (1 1 1); }\n");
+    s.control = "startFrom latestTime;\nstartTime 0;\nstopAt endTime;\nendTime 0.5;\ndeltaT 1e-3;\n"
+                "writeControl adjustableRunTime;\nwriteInterval 1;\n";
+    write(scratch.path(), s);
+    const auto run = runAndKeep<3>(scratch.path());
+    const Particles<3>& p = run->solver().particles();
+    const double t = run->time();
+    EXPECT_NEAR(t, 0.5, 1e-9);
+    const Eigen::Vector3d c(0.3, 0.3, 0.3);
+    const Eigen::Matrix3d R = Eigen::AngleAxisd(2.0 * t, Eigen::Vector3d(1, 1, 1).normalized()).toRotationMatrix();
+    double worst = 0;
+    for (std::size_t q = 0; q < p.size(); ++q) worst = std::max(worst, (p.x[q] - (c + R * (p.x0[q] - c))).norm());
+    EXPECT_LT(worst, 1e-12);
+}
+
+TEST(ThreeDCase, moveToolEndsAtItsDisplacementAndExcavateDigsTheRegionFromTheTop)
+{
+    // Stages in 3D: moveTool pushes the rigid plate of the oedometer scene until it has moved
+    // 1 mm (at 0.01 m/s: 0.1 s, within a step); then excavate digs the top 0.04 m of the
+    // cube's middle in layers of one cell, each to equilibrium: the particles left in the
+    // region are the ones below the cut.
+    ScratchDir scratch{"stages3d"};
+    Scene s;
+    s.materials = "rubber { type linearElastic; rho 1000; E 1e6; nu 0.3; }\nsteel { type linearElastic; rho 7800; "
+                  "E 2e11; nu 0.3; }\n";
+    s.grid = "origin (0 0 0); cellSize 0.025; nCells (4 6 4);\n"
+             "boundaries { left { type slip; } right { type slip; } bottom { type fixed; } top { type free; } "
+             "back { type slip; } front { type slip; } }\n";
+    s.bodies = "cube { material rubber; shape { type box; min (0 0 0); max (0.1 0.1 0.1); } particlesPerCell 2; }\n"
+               "plate { material steel; shape { type box; min (0 0.1 0); max (0.1 0.125 0.1); } particlesPerCell 2; }\n";
+    s.control = "startFrom latestTime;\nstartTime 0;\ndeltaT 1;\nadjustTimeStep yes;\nmaxCourant 0.5;\n"
+                "writeControl adjustableRunTime;\nwriteInterval 10;\n"
+                "stages {\n"
+                "  push { type moveTool; body plate; drivers { plate { type prescribedVelocity; velocity (0 -0.01 0); } }\n"
+                "         until { displacement 0.001; } }\n"
+                "  dig { type excavate; body cube; bodies (cube); region { type box; min (0.025 0.05 0.025); "
+                "max (0.075 0.2 0.075); } layerThickness 0.025; until { equilibrium 1e-4; maxTime 0.5; } }\n"
+                "}\n";
+    write(scratch.path(), s);
+    const auto run = runAndKeep<3>(scratch.path());
+    const auto& records = run->stages()->records();
+    ASSERT_EQ(records.size(), 2u);
+    EXPECT_EQ(records[0].name, "push");
+    EXPECT_NE(records[0].reason.find("displacement"), std::string::npos) << records[0].reason;
+    EXPECT_NEAR(records[0].endTime, 0.1, 2e-4);
+    EXPECT_EQ(records[1].type, "excavate");
+    const Particles<3>& p = run->solver().particles();
+    std::size_t inRegion = 0;
+    for (std::size_t q = 0; q < p.size(); ++q) {
+        const Eigen::Vector3d& x0 = p.x0[q];
+        const bool under = x0.x() > 0.025 && x0.x() < 0.075 && x0.z() > 0.025 && x0.z() < 0.075;
+        if (p.body[q] != 0 || !under) continue;
+        EXPECT_LT(x0.y(), 0.05) << "a particle of the dug region is left";
+        ++inRegion;
+    }
+    EXPECT_EQ(inRegion, 4u * 4 * 4) << "the region's particles below the cut stay";
+    EXPECT_EQ(p.size(), 4u * 4 * 4 * 8 - 4u * 4 * 4) << "the cube less the dug particles (the plate sleeps in dig)";
 }
