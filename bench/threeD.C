@@ -1,5 +1,5 @@
-// The 3D engine's throughput and memory per particle, on scenes set up in memory (the 3D
-// case files come with the reader's dispatch): the engine's own step loop, as picSolver
+// The 3D engine's throughput and memory per particle, on scenes set up in memory (so that
+// it measures the engine alone, without the reader and the writers): the engine's step loop, as picSolver
 // runs it (USL, bilinear cells, FLIP, the particles sorted by cell every 100 steps), timed
 // from the first step to the last. Threads: OMP_NUM_THREADS.
 //

@@ -11,13 +11,16 @@
 #include "dictionary/Dictionary.H"
 #include "materials/JaumannRate.H"
 #include "materials/Material.H"
+#include "plasticity/PrincipalStresses.H"
 #include "plasticity/StressInvariants.H"
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 
 #include <cmath>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -177,4 +180,41 @@ TEST(ThreeDJaumann, aRigidSpinTurnsTheStressAndKeepsItsInvariants)
     EXPECT_NEAR(meanStress(turned), meanStress(s), 1e-14);
     EXPECT_NEAR(secondInvariant(turned), secondInvariant(s), 1e-13);
     EXPECT_NEAR(full(turned).determinant(), full(s).determinant(), 1e-13);
+}
+
+TEST(ThreeDPrincipalStresses, nearADoubleRootTheValuesAndAxesAreExactToRoundOff)
+{
+    // The 3D principal stresses near a double root (a body at rest: equal lateral stresses;
+    // the edges of a Mohr-Coulomb pyramid), where the closed form alone loses the pair to
+    // 1e-8, and away from it: the values against Eigen's iterative solver and the stress
+    // rebuilt from the values on the axes, both to 1e-13 of the stress, the axes orthonormal;
+    // over gaps of 0 ... 1e-4 of the stress and no pair, random orientations, scales from
+    // 1 Pa to 1 GPa.
+    std::mt19937 random(11);
+    std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+    double worstValue = 0, worstRebuild = 0, worstFrame = 0;
+    for (int k = 0; k < 20000; ++k) {
+        const double scale = std::pow(10.0, 9.0 * (0.5 + 0.5 * uniform(random)));
+        const double a = uniform(random), other = uniform(random);
+        const double gap = k % 5 == 0 ? 0.0 : std::pow(10.0, -4.0 - 12.0 * (0.5 + 0.5 * uniform(random)));
+        const Eigen::Vector3d axis(uniform(random), uniform(random), uniform(random));
+        const Eigen::Matrix3d R = Eigen::AngleAxisd(M_PI * uniform(random), axis.normalized()).toRotationMatrix();
+        const Eigen::Vector3d diagonal = k % 3 == 0 ? Eigen::Vector3d(a, other, uniform(random))  // no pair at all
+                                         : k % 2    ? Eigen::Vector3d(a, a + gap, other)
+                                                    : Eigen::Vector3d(other, a, a + gap);
+        const Eigen::Matrix3d S = scale * R * diagonal.asDiagonal() * R.transpose();
+        Tensor3 s;
+        s << S(0, 0), S(1, 1), S(2, 2), S(0, 1), S(1, 2), S(0, 2);
+        const PrincipalStresses<3> principal(s);
+        Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> iterative(S);
+        const double size = S.cwiseAbs().maxCoeff();
+        worstValue = std::max(worstValue, (principal.values() - iterative.eigenvalues()).cwiseAbs().maxCoeff() / size);
+        worstRebuild = std::max(worstRebuild, (principal.tensor(principal.values()) - s).cwiseAbs().maxCoeff() / size);
+        Eigen::Matrix3d frame;
+        frame << principal.axis(0), principal.axis(1), principal.axis(2);
+        worstFrame = std::max(worstFrame, (frame.transpose() * frame - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff());
+    }
+    EXPECT_LT(worstValue, 1e-13);
+    EXPECT_LT(worstRebuild, 1e-13);
+    EXPECT_LT(worstFrame, 1e-13);
 }
