@@ -83,6 +83,11 @@ add_test(NAME benchQuick
                  ${PROJECT_SOURCE_DIR} ${PROJECT_BINARY_DIR})
 set_tests_properties(benchQuick PROPERTIES TIMEOUT 600 LABELS integration)
 
+# A file-size limit and a closed output pipe (tests/scripts/writeLimits.sh).
+add_test(NAME writeLimits
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/scripts/writeLimits.sh ${PROJECT_SOURCE_DIR} ${PROJECT_BINARY_DIR})
+set_tests_properties(writeLimits PROPERTIES TIMEOUT 300 LABELS integration)
+
 # Mass scaling against the unscaled run on the seed's anchor (tests/scripts/massScaling.sh).
 add_test(NAME massScalingAnchor
          COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/scripts/massScaling.sh ${PROJECT_SOURCE_DIR} ${PROJECT_BINARY_DIR})

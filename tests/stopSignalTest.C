@@ -1,4 +1,5 @@
-// A run stopped by SIGTERM (a batch system's kill) or SIGINT (Ctrl-C) ends cleanly: it
+// A run stopped by SIGTERM (a batch system's kill), SIGINT (Ctrl-C) or SIGHUP (its terminal
+// closed) ends cleanly: it
 // finishes the step, writes that state as a time directory (listed in the ParaView index),
 // leaves no temporary directory, prints one line and exits with 128 + the signal's number;
 // a restart goes on from the written state.
@@ -111,3 +112,5 @@ void stopsCleanlyOn(int signal, const std::string& name)
 TEST(StopSignal, sigtermWritesTheCurrentStateAndExits143) { stopsCleanlyOn(SIGTERM, "SIGTERM"); }
 
 TEST(StopSignal, sigintWritesTheCurrentStateAndExits130) { stopsCleanlyOn(SIGINT, "SIGINT"); }
+
+TEST(StopSignal, sighupWritesTheCurrentStateAndExits129) { stopsCleanlyOn(SIGHUP, "SIGHUP"); }
