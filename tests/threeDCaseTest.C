@@ -78,6 +78,21 @@ Scene column(int dimensions)
     return s;
 }
 
+//- An elastic cube (0.1 m, rubber) in a box with smooth walls and a fixed floor, a steel
+//  plate one cell thick on it (the oedometer of the rigid-plate tests; the control is theirs).
+Scene plateOnCube()
+{
+    Scene s;
+    s.materials = "rubber { type linearElastic; rho 1000; E 1e6; nu 0.3; }\nsteel { type linearElastic; rho 7800; "
+                  "E 2e11; nu 0.3; }\n";
+    s.grid = "origin (0 0 0); cellSize 0.025; nCells (4 6 4);\n"
+             "boundaries { left { type slip; } right { type slip; } bottom { type fixed; } top { type free; } "
+             "back { type slip; } front { type slip; } }\n";
+    s.bodies = "cube { material rubber; shape { type box; min (0 0 0); max (0.1 0.1 0.1); } particlesPerCell 2; }\n"
+               "plate { material steel; shape { type box; min (0 0.1 0); max (0.1 0.125 0.1); } particlesPerCell 2; }\n";
+    return s;
+}
+
 std::string readFile(const fs::path& file)
 {
     std::ifstream in(file, std::ios::binary);
@@ -311,14 +326,7 @@ TEST(ThreeDCase, aRigidPlatePressingABoxOfElasticMaterialFeelsTheOedometricForce
     // the plate's centre is nil, and the plate has done the work F d / 2 on the material
     // (within 3 %).
     ScratchDir scratch{"plate3d"};
-    Scene s;
-    s.materials = "rubber { type linearElastic; rho 1000; E 1e6; nu 0.3; }\nsteel { type linearElastic; rho 7800; "
-                  "E 2e11; nu 0.3; }\n";
-    s.grid = "origin (0 0 0); cellSize 0.025; nCells (4 6 4);\n"
-             "boundaries { left { type slip; } right { type slip; } bottom { type fixed; } top { type free; } "
-             "back { type slip; } front { type slip; } }\n";
-    s.bodies = "cube { material rubber; shape { type box; min (0 0 0); max (0.1 0.1 0.1); } particlesPerCell 2; }\n"
-               "plate { material steel; shape { type box; min (0 0.1 0); max (0.1 0.125 0.1); } particlesPerCell 2; }\n";
+    Scene s = plateOnCube();
     writeDictionary(scratch.path() / "constant/rigidBodies", "plate { type prescribedVelocity; velocity (0 -0.01 0); }\n");
     s.control = "startFrom latestTime;\nstartTime 0;\nstopAt endTime;\nendTime 0.2;\ndeltaT 1;\nadjustTimeStep yes;\n"
                 "maxCourant 0.5;\nwriteControl adjustableRunTime;\nwriteInterval 0.1;\n"
@@ -520,14 +528,7 @@ TEST(ThreeDCase, moveToolEndsAtItsDisplacementAndExcavateDigsTheRegionFromTheTop
     // cube's middle in layers of one cell, each to equilibrium: the particles left in the
     // region are the ones below the cut.
     ScratchDir scratch{"stages3d"};
-    Scene s;
-    s.materials = "rubber { type linearElastic; rho 1000; E 1e6; nu 0.3; }\nsteel { type linearElastic; rho 7800; "
-                  "E 2e11; nu 0.3; }\n";
-    s.grid = "origin (0 0 0); cellSize 0.025; nCells (4 6 4);\n"
-             "boundaries { left { type slip; } right { type slip; } bottom { type fixed; } top { type free; } "
-             "back { type slip; } front { type slip; } }\n";
-    s.bodies = "cube { material rubber; shape { type box; min (0 0 0); max (0.1 0.1 0.1); } particlesPerCell 2; }\n"
-               "plate { material steel; shape { type box; min (0 0.1 0); max (0.1 0.125 0.1); } particlesPerCell 2; }\n";
+    Scene s = plateOnCube();
     s.control = "startFrom latestTime;\nstartTime 0;\ndeltaT 1;\nadjustTimeStep yes;\nmaxCourant 0.5;\n"
                 "writeControl adjustableRunTime;\nwriteInterval 10;\n"
                 "stages {\n"

@@ -95,6 +95,27 @@ def run_in_segments(case):
     return particles, index + steps, round(wall + last_wall, 3)
 
 
+def last_state(case):
+    """The newest time directory of `case` holding particles: (its name, read_particles of it)."""
+    times = sorted((t for t in os.listdir(case) if t[0].isdigit()
+                    and os.path.isfile(os.path.join(case, t, 'particles.vtp'))), key=float)
+    return times[-1], read_particles(os.path.join(case, times[-1], 'particles.vtp'))
+
+
+def deposit_front(distances, heights, cell, thin):
+    """Where a deposit ends: binned by `distances` (from a wall or an axis) in cells of
+    `cell`, the edge of the first bin past the one at the wall whose highest particle lies
+    below `thin`."""
+    height = {}
+    for r, y in zip(distances, heights):
+        b = int(r / cell)
+        height[b] = max(height.get(b, 0.0), y)
+    b = 0
+    while height.get(b + 1, 0.0) >= thin:
+        b += 1
+    return (b + 1) * cell
+
+
 def read_particles(path):
     """Point arrays of a particles.vtp (raw appended binary, UInt64 headers), by name.
 

@@ -8,7 +8,7 @@ import os
 import re
 import sys
 sys.path.insert(0, os.path.join(os.environ['GPIC_DIR'], 'etc', 'python'))
-from gpicdat import read_columns, read_particles, run_reached, run_summary
+from gpicdat import deposit_front, last_state, read_columns, run_reached, run_summary
 
 d = sys.argv[1]
 L0 = 0.1
@@ -24,23 +24,14 @@ except RuntimeError:  # stopped before its first progress line
     particles = int(re.search(r'Case \S+: (\d+) particles', log).group(1))
     steps = int(re.search(r'\(step (\d+)\)', log).group(1))
     wall = 0.0
-times = sorted((t for t in os.listdir(d) if t[0].isdigit() and os.path.isfile(os.path.join(d, t, 'particles.vtp'))), key=float)
-last = times[-1]
-a = read_particles(os.path.join(d, last, 'particles.vtp'))
+last, a = last_state(d)
 xs = [p[0] for p in a['Points']]
 ys = [p[1] for p in a['Points']]
 with open(os.path.join(d, 'deposit.dat'), 'w') as f:
     for x, y in zip(xs, ys):
         f.write('%g %g\n' % (x, y))
 h = float(re.search(r'cellSize\s+([0-9.e-]+);', open(os.path.join(d, 'constant', 'grid')).read()).group(1))
-height = {}
-for x, y in zip(xs, ys):
-    b = int(x / h)
-    height[b] = max(height.get(b, 0.0), y)
-b = 0
-while height.get(b + 1, 0.0) >= 0.1 * L0:
-    b += 1
-front = (b + 1) * h
+front = deposit_front(xs, ys, h, 0.1 * L0)
 top = max(y for x, y in zip(xs, ys) if x < 0.02)
 Ek = read_columns(os.path.join(d, 'postProcessing', 'motion', '0', 'bodyMotion.dat'))['Ek']
 print(finished, last, '%.4f' % front, '%.3f' % ((front - L0) / L0), '%.4f' % top,

@@ -9,7 +9,7 @@ import os
 import re
 import sys
 sys.path.insert(0, os.path.join(os.environ['GPIC_DIR'], 'etc', 'python'))
-from gpicdat import read_columns, read_particles, run_reached, run_summary
+from gpicdat import deposit_front, last_state, read_columns, run_reached, run_summary
 
 d = sys.argv[1]
 R0 = 0.1
@@ -19,23 +19,14 @@ try:
 except RuntimeError:
     finished = 0
 particles, steps, wall = run_reached(os.path.join(d, 'log.picSolver'))
-times = sorted((t for t in os.listdir(d) if t[0].isdigit() and os.path.isfile(os.path.join(d, t, 'particles.vtp'))), key=float)
-last = times[-1]
-a = read_particles(os.path.join(d, last, 'particles.vtp'))
+last, a = last_state(d)
 rs = [math.hypot(p[0], p[2]) for p in a['Points']]  # z = 0 in the axisymmetric plane
 ys = [p[1] for p in a['Points']]
 with open(os.path.join(d, 'deposit.dat'), 'w') as f:
     for r, y in zip(rs, ys):
         f.write('%g %g\n' % (r, y))
 h = float(re.search(r'cellSize\s+([0-9.e-]+);', open(os.path.join(d, 'constant', 'grid')).read()).group(1))
-height = {}
-for r, y in zip(rs, ys):
-    b = int(r / h)
-    height[b] = max(height.get(b, 0.0), y)
-b = 0
-while height.get(b + 1, 0.0) >= 0.1 * R0:
-    b += 1
-front = (b + 1) * h
+front = deposit_front(rs, ys, h, 0.1 * R0)
 top = max(y for r, y in zip(rs, ys) if r < 0.02)
 Ek = read_columns(os.path.join(d, 'postProcessing', 'motion', '0', 'bodyMotion.dat'))['Ek']
 print(finished, last, '%.4f' % front, '%.3f' % ((front - R0) / R0), '%.4f' % top,
