@@ -95,6 +95,26 @@ def run_in_segments(case):
     return particles, index + steps, round(wall + last_wall, 3)
 
 
+def run_status(case):
+    """(finished 1/0, particles, steps, wall seconds) of the picSolver run logged in
+    <case>/log.picSolver; a run stopped before its first progress line: its start's count,
+    the step it stopped at and no wall time."""
+    log_path = os.path.join(case, 'log.picSolver')
+    try:
+        run_summary(log_path)
+        finished = 1
+    except RuntimeError:
+        finished = 0
+    try:
+        particles, steps, wall = run_reached(log_path)
+    except RuntimeError:
+        log = open(log_path).read()
+        particles = int(re.search(r'Case \S+: (\d+) particles', log).group(1))
+        steps = int(re.search(r'\(step (\d+)\)', log).group(1))
+        wall = 0.0
+    return finished, particles, steps, wall
+
+
 def last_state(case):
     """The newest time directory of `case` holding particles: (its name, read_particles of it)."""
     times = sorted((t for t in os.listdir(case) if t[0].isdigit()

@@ -8,22 +8,11 @@ import os
 import re
 import sys
 sys.path.insert(0, os.path.join(os.environ['GPIC_DIR'], 'etc', 'python'))
-from gpicdat import deposit_front, last_state, read_columns, run_reached, run_summary
+from gpicdat import deposit_front, last_state, read_columns, run_status
 
 d = sys.argv[1]
 L0 = 0.1
-try:
-    run_summary(os.path.join(d, 'log.picSolver'))
-    finished = 1
-except RuntimeError:
-    finished = 0
-try:
-    particles, steps, wall = run_reached(os.path.join(d, 'log.picSolver'))
-except RuntimeError:  # stopped before its first progress line
-    log = open(os.path.join(d, 'log.picSolver')).read()
-    particles = int(re.search(r'Case \S+: (\d+) particles', log).group(1))
-    steps = int(re.search(r'\(step (\d+)\)', log).group(1))
-    wall = 0.0
+finished, particles, steps, wall = run_status(d)
 last, a = last_state(d)
 xs = [p[0] for p in a['Points']]
 ys = [p[1] for p in a['Points']]

@@ -9,16 +9,11 @@ import os
 import re
 import sys
 sys.path.insert(0, os.path.join(os.environ['GPIC_DIR'], 'etc', 'python'))
-from gpicdat import deposit_front, last_state, read_columns, run_reached, run_summary
+from gpicdat import deposit_front, last_state, read_columns, run_status
 
 d = sys.argv[1]
 R0 = 0.1
-try:
-    run_summary(os.path.join(d, 'log.picSolver'))
-    finished = 1
-except RuntimeError:
-    finished = 0
-particles, steps, wall = run_reached(os.path.join(d, 'log.picSolver'))
+finished, particles, steps, wall = run_status(d)
 last, a = last_state(d)
 rs = [math.hypot(p[0], p[2]) for p in a['Points']]  # z = 0 in the axisymmetric plane
 ys = [p[1] for p in a['Points']]
