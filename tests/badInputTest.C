@@ -516,3 +516,24 @@ TEST_F(BadInput, particlesSpeedingPastAFixedStepStopTheRunWithTheLimit)
     }
     EXPECT_FALSE(fs::exists(dir / "0.6"));
 }
+
+TEST(RepeatedNames, aBodyNamedTwiceIsRefusedNotMergedIntoOne)
+{
+    // Two sub-dictionaries of one name are merged (OpenFOAM's rule): in constant/bodies that
+    // silently lost a body (316 particles of 632). picInit refuses it at the second, naming
+    // the first; constant/materials and constant/rigidBodies alike.
+    ScratchDir scratch{"repeatedBody"};
+    const fs::path dir = scratch.path() / "disks";
+    copyCase(tutorialPath("verification/twoDisks"), dir);
+    replaceText(dir / "constant/bodies", "lowerRight", "upperLeft");
+    std::string message;
+    try {
+        gpic::initialiseCase(dir.string());
+    } catch (const gpic::InputError& e) {
+        message = e.what();
+    }
+    EXPECT_NE(message.find("constant/bodies:"), std::string::npos) << message;
+    EXPECT_NE(message.find("body 'upperLeft' is given twice"), std::string::npos) << message;
+    EXPECT_NE(message.find("(first at line"), std::string::npos) << message;
+    EXPECT_FALSE(fs::exists(dir / "0")) << "nothing written";
+}

@@ -225,9 +225,15 @@ TEST(Dictionary, AValueGivenTwiceInOneBlockIsSaidButAnOverrideOfAMacroIsNot)
     const Dictionary d = Dictionary::parse("a 1;\nb 2;\ns { x 1; }\na 3;\ns { x 2; }\n", "f");
     std::string err = ::testing::internal::GetCapturedStderr();
     EXPECT_EQ(d.get<int>("a"), 3);
-    EXPECT_EQ(err, "Warning: f:4: keyword 'a' is given twice in dictionary f (first at line 1): the later value is used\n");
-    // Inside a sub-dictionary too; a repeated sub-dictionary merges silently (its values are
-    // checked within each block).
+    EXPECT_EQ(err, "Warning: f:4: keyword 'a' is given twice in dictionary f (first at line 1): the later value is used\n"
+                   "Warning: f:5: sub-dictionary 's' is given twice in dictionary f (first at line 3): the two are "
+                   "merged, the later entries win\n");
+    ASSERT_EQ(d.repeatedSubDicts().size(), 1u);
+    EXPECT_EQ(d.repeatedSubDicts().front().firstLine, 3);
+    EXPECT_EQ(d.repeatedSubDicts().front().secondLine, 5);
+    // Inside a sub-dictionary too; a repeated sub-dictionary merges, with a warning (its
+    // values are checked within each block; where a repeated name is a mistake, as two bodies
+    // of one name, the reader refuses it: Dictionary::refuseRepeats).
     ::testing::internal::CaptureStderr();
     Dictionary::parse("s { x 1;\n x 2; }\n", "f");
     err = ::testing::internal::GetCapturedStderr();

@@ -83,6 +83,7 @@ FilledBodies<D> fillBodies(const Dictionary& bodiesDict, const Grid<D>& grid,
     using Vector = typename Space<D>::Vector;
     FilledBodies<D> out;
     std::vector<std::unique_ptr<Shape<D>>> shapes;  //- of the bodies filled so far
+    bodiesDict.refuseRepeats("body");  // merged, one body would be silently lost
     for (const auto& key : bodiesDict.keys()) {
         if (!bodiesDict.isDict(key)) bodiesDict.fail(key, "'" + key + "' is not a body sub-dictionary");
         const Dictionary& body = bodiesDict.subDict(key);

@@ -16,6 +16,7 @@ Dictionary readCaseFile(const std::string& caseDir, const std::string& relativeP
 template <int D> std::vector<std::unique_ptr<Material<D>>> readMaterials(const Dictionary& materialsDict)
 {
     std::vector<std::unique_ptr<Material<D>>> materials;
+    materialsDict.refuseRepeats("material");
     for (const auto& key : materialsDict.keys()) {
         if (!materialsDict.isDict(key))
             materialsDict.fail(key, "'" + key + "' is not a material sub-dictionary");
@@ -67,6 +68,7 @@ std::vector<std::unique_ptr<RigidBodyDriver<D>>> readRigidBodies(const Dictionar
                                                                  const std::vector<std::string>& bodyNames)
 {
     std::vector<std::unique_ptr<RigidBodyDriver<D>>> drivers(bodyNames.size());
+    dict.refuseRepeats("rigid body");
     for (const auto& key : dict.keys()) {
         const auto it = std::find(bodyNames.begin(), bodyNames.end(), key);
         if (it == bodyNames.end()) {

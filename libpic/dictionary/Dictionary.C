@@ -44,7 +44,7 @@ Dictionary Dictionary::parse(const std::string& text, const std::string& fileNam
 
 Dictionary::Dictionary(const Dictionary& other)
     : name_(other.name_), file_(other.file_), startLine_(other.startLine_),
-      endLine_(other.endLine_), parent_(other.parent_)
+      endLine_(other.endLine_), parent_(other.parent_), repeated_(other.repeated_)
 {
     // The copy's own parent stays the original's (it names the same place); everything below
     // it is a deep copy owned by, and linked to, the copy.
@@ -62,7 +62,7 @@ Dictionary& Dictionary::operator=(const Dictionary& other)
 Dictionary::Dictionary(Dictionary&& other) noexcept
     : name_(std::move(other.name_)), file_(std::move(other.file_)),
       startLine_(other.startLine_), endLine_(other.endLine_), parent_(other.parent_),
-      entries_(std::move(other.entries_))
+      entries_(std::move(other.entries_)), repeated_(std::move(other.repeated_))
 {
     for (Entry& e : entries_)
         if (e.dict) e.dict->parent_ = this;  // names are unchanged: only the address moved
@@ -84,6 +84,7 @@ Dictionary& Dictionary::operator=(Dictionary&& other) noexcept
     startLine_ = other.startLine_;
     endLine_ = other.endLine_;
     entries_ = std::move(other.entries_);
+    repeated_ = std::move(other.repeated_);
     DictionaryParser::relink(*this);
     return *this;
 }
@@ -286,6 +287,15 @@ std::string Dictionary::toString(int indent) const
         }
     }
     return out.str();
+}
+
+void Dictionary::refuseRepeats(const std::string& what) const
+{
+    if (repeated_.empty()) return;
+    const Repeat& r = repeated_.front();
+    throw InputError(file_, r.secondLine,
+                     what + " '" + r.keyword + "' is given twice in " + name_ + " (first at line " +
+                         std::to_string(r.firstLine) + "): give each " + what + " its own name");
 }
 
 std::string fileHeader(const std::string& object, const std::string& location)

@@ -93,7 +93,7 @@ void DictionaryParser::parseEntries(Dictionary& dict, Stream& in, const Token* o
     // Values written in this block, by keyword and line: a second one is legal (the later
     // wins, as in OpenFOAM) but more often a mistake than an intent, so it is said. A later
     // value over one from an #include or a $macro is the usual way to override and is not.
-    std::vector<std::pair<std::string, int>> written;
+    std::vector<std::pair<std::string, int>> written, writtenDicts;
     while (!in.atEnd()) {
         const Token& t = in.next();
         if (t.kind == Token::Kind::punctuation) {
@@ -120,6 +120,16 @@ void DictionaryParser::parseEntries(Dictionary& dict, Stream& in, const Token* o
                                 "keyword '" + t.text + "' is given twice in dictionary " + dict.name_ +
                                     " (first at line " + std::to_string(line) + "): the later value is used");
                 written.emplace_back(t.text, t.line);
+            } else {
+                for (const auto& [keyword, line] : writtenDicts)
+                    if (keyword == t.text) {
+                        warning(t.file, t.line,
+                                "sub-dictionary '" + t.text + "' is given twice in dictionary " + dict.name_ +
+                                    " (first at line " + std::to_string(line) +
+                                    "): the two are merged, the later entries win");
+                        dict.repeated_.push_back({t.text, line, t.line});
+                    }
+                writtenDicts.emplace_back(t.text, t.line);
             }
             parseEntry(dict, t, in, Mode::merge);
         }
