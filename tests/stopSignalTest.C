@@ -13,6 +13,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
 #include <regex>
 #include <sstream>
 #include <thread>
@@ -114,3 +115,38 @@ TEST(StopSignal, sigtermWritesTheCurrentStateAndExits143) { stopsCleanlyOn(SIGTE
 TEST(StopSignal, sigintWritesTheCurrentStateAndExits130) { stopsCleanlyOn(SIGINT, "SIGINT"); }
 
 TEST(StopSignal, sighupWritesTheCurrentStateAndExits129) { stopsCleanlyOn(SIGHUP, "SIGHUP"); }
+
+TEST(StopSignal, aKilledRunKeepsTheFunctionObjectRowsOfItsLastWrittenState)
+{
+    // SIGKILL cannot be caught: what survives is what is on disk. The function objects' rows
+    // are pushed to their files at every time directory, so those of the newest state written
+    // are all there, whole (bodyMotion every 1000 steps of 1e-5 s: a row per 0.01 s, fewer
+    // than a file buffer holds).
+    ScratchDir scratch{"killed"};
+    const fs::path dir = scratch.path() / "twoDisks";
+    copyCase(tutorialPath("verification/twoDisks"), dir);
+    replaceText(dir / "system/controlDict", "writeInterval 10;", "writeInterval 1000;");
+    setEntry(dir / "system/controlDict", "deltaT", "1e-5");
+    setEntry(dir / "system/controlDict", "endTime", "3");
+    ASSERT_EQ(runApplication("picInit", dir).exitCode, 0);
+    const pid_t pid = startSolver(dir);
+    ASSERT_GT(pid, 0);
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+    while (!fs::exists(dir / "0.1/uniform/time") && std::chrono::steady_clock::now() < deadline)
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    ASSERT_TRUE(fs::exists(dir / "0.1/uniform/time")) << "the run never wrote 0.1";
+    ASSERT_EQ(kill(pid, SIGKILL), 0);
+    waitFor(pid, 60);
+
+    const double newest = gpic::listTimeDirectories(dir.string()).back().first;
+    ASSERT_GE(newest, 0.1);
+    const auto rows = readColumns(dir / "postProcessing/motion/0/bodyMotion.dat");
+    ASSERT_TRUE(rows.count("time")) << "no rows at all";
+    std::size_t upToNewest = 0;
+    for (double t : rows.at("time"))
+        if (t <= newest + 1e-9) ++upToNewest;
+    EXPECT_EQ(upToNewest, static_cast<std::size_t>(std::llround(newest / 0.01)) + 1)
+        << "rows up to t = " << newest << " s, the newest state written";
+    // Every row up to there is whole: all its columns.
+    for (const auto& [name, values] : rows) EXPECT_GE(values.size(), upToNewest) << name;
+}

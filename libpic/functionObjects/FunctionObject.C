@@ -4,6 +4,8 @@
 #include "dictionary/Dictionary.H"
 
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 
 namespace gpic {
@@ -52,13 +54,29 @@ std::vector<int> FunctionObject<D>::bodyIds(const Dictionary& dict, const std::s
     return ids;
 }
 
+template <int D> std::filesystem::path FunctionObject<D>::directory() const
+{
+    return std::filesystem::path(context_.caseDir) / "postProcessing" / name_ / context_.startTimeName;
+}
+
+template <int D> void FunctionObject<D>::flushFiles()
+{
+    for (auto& [fileName, stream] : files_) {
+        errno = 0;
+        stream->flush();
+        if (!*stream)
+            throw RunError("cannot write " + (directory() / fileName).string() + ": " +
+                           (errno ? std::strerror(errno) : "the stream failed"));
+    }
+}
+
 template <int D>
 std::ofstream& FunctionObject<D>::file(const std::string& fileName)
 {
     for (auto& [n, f] : files_)
         if (n == fileName) return *f;
     namespace fs = std::filesystem;
-    const fs::path dir = fs::path(context_.caseDir) / "postProcessing" / name_ / context_.startTimeName;
+    const fs::path dir = directory();
     fs::create_directories(dir);
     auto stream = std::make_unique<std::ofstream>(dir / fileName);
     if (!*stream) throw InputError((dir / fileName).string(), 0, "cannot open for writing");

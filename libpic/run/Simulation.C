@@ -169,6 +169,8 @@ template <int D>
 void Simulation<D>::write()
 {
     auto timer = solver_.timers().time("output");
+    // The function objects' rows up to this state on disk first: a run killed later keeps them.
+    for (auto& f : case_->functions) f->flushFiles();
     const std::string name = times_.nameFor(time_);
     writeState(solver_.particles(), time_, step_, deltaT_, solver_.removedMass(), name);
     guard_->stateWritten((fs::path(options_.caseDir) / name / "particles.vtp").string(), time_, step_, deltaT_);
