@@ -54,24 +54,39 @@ int waitFor(pid_t pid, double seconds)
     return -1;
 }
 
+//- twoDisks in `dir` (bodyMotion every `motionInterval` steps) with 1e-5 s steps to 3 s
+//  (before the disks leave the grid), far longer than a test waits, so that only a signal ends
+//  it; picSolver started on it and into the run: its first time directory after 0 written.
+//  Returns picSolver's process id, or 0 (with a test failure).
+pid_t runningTwoDisks(const fs::path& dir, int motionInterval = 10)
+{
+    copyCase(tutorialPath("verification/twoDisks"), dir);
+    if (motionInterval != 10)
+        replaceText(dir / "system/controlDict", "writeInterval 10;", "writeInterval " + std::to_string(motionInterval) + ";");
+    setEntry(dir / "system/controlDict", "deltaT", "1e-5");
+    setEntry(dir / "system/controlDict", "endTime", "3");
+    if (runApplication("picInit", dir).exitCode != 0) {
+        ADD_FAILURE() << "picInit failed on " << dir;
+        return 0;
+    }
+    const pid_t pid = startSolver(dir);
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+    while (!fs::exists(dir / "0.1/uniform/time") && std::chrono::steady_clock::now() < deadline)
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    if (!fs::exists(dir / "0.1/uniform/time")) {
+        ADD_FAILURE() << "the run never wrote 0.1";
+        waitFor(pid, 0);
+        return 0;
+    }
+    return pid;
+}
+
 void stopsCleanlyOn(int signal, const std::string& name)
 {
     ScratchDir scratch{"stopSignal"};
     const fs::path dir = scratch.path() / "twoDisks";
-    copyCase(tutorialPath("verification/twoDisks"), dir);
-    // 1e-5 s steps to 3 s (before the disks leave the grid): far longer than the test waits,
-    // so only the signal ends this run.
-    setEntry(dir / "system/controlDict", "deltaT", "1e-5");
-    setEntry(dir / "system/controlDict", "endTime", "3");
-    ASSERT_EQ(runApplication("picInit", dir).exitCode, 0);
-
-    const pid_t pid = startSolver(dir);
+    const pid_t pid = runningTwoDisks(dir);
     ASSERT_GT(pid, 0);
-    // Into the run: a first time directory after 0 is written.
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
-    while (!fs::exists(dir / "0.1/uniform/time") && std::chrono::steady_clock::now() < deadline)
-        std::this_thread::sleep_for(std::chrono::milliseconds(20));
-    ASSERT_TRUE(fs::exists(dir / "0.1/uniform/time")) << "the run never wrote 0.1";
     ASSERT_EQ(kill(pid, signal), 0);
     const int status = waitFor(pid, 120);
     ASSERT_NE(status, -1) << "picSolver did not stop within 120 s of " << name;
@@ -124,17 +139,8 @@ TEST(StopSignal, aKilledRunKeepsTheFunctionObjectRowsOfItsLastWrittenState)
     // than a file buffer holds).
     ScratchDir scratch{"killed"};
     const fs::path dir = scratch.path() / "twoDisks";
-    copyCase(tutorialPath("verification/twoDisks"), dir);
-    replaceText(dir / "system/controlDict", "writeInterval 10;", "writeInterval 1000;");
-    setEntry(dir / "system/controlDict", "deltaT", "1e-5");
-    setEntry(dir / "system/controlDict", "endTime", "3");
-    ASSERT_EQ(runApplication("picInit", dir).exitCode, 0);
-    const pid_t pid = startSolver(dir);
+    const pid_t pid = runningTwoDisks(dir, 1000);
     ASSERT_GT(pid, 0);
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
-    while (!fs::exists(dir / "0.1/uniform/time") && std::chrono::steady_clock::now() < deadline)
-        std::this_thread::sleep_for(std::chrono::milliseconds(20));
-    ASSERT_TRUE(fs::exists(dir / "0.1/uniform/time")) << "the run never wrote 0.1";
     ASSERT_EQ(kill(pid, SIGKILL), 0);
     waitFor(pid, 60);
 
