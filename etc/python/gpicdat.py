@@ -122,6 +122,18 @@ def last_state(case):
     return times[-1], read_particles(os.path.join(case, times[-1], 'particles.vtp'))
 
 
+def cell_size(case):
+    """The (square) cell size of <case>/constant/grid."""
+    return float(re.search(r'cellSize\s+([0-9.e-]+);', open(os.path.join(case, 'constant', 'grid')).read()).group(1))
+
+
+def write_deposit(case, distances, heights):
+    """<case>/deposit.dat: a (distance, height) pair per particle, for the deposit plot."""
+    with open(os.path.join(case, 'deposit.dat'), 'w') as f:
+        for r, y in zip(distances, heights):
+            f.write('%g %g\n' % (r, y))
+
+
 def deposit_front(distances, heights, cell, thin):
     """Where a deposit ends: binned by `distances` (from a wall or an axis) in cells of
     `cell`, the edge of the first bin past the one at the wall whose highest particle lies

@@ -172,8 +172,9 @@ std::vector<char> readRigidRotation(const Dictionary& rigidBodies, const std::ve
 
 int caseDimension(const Dictionary& gridDict)
 {
-    const Entry* n = gridDict.findEntry("nCells");
-    const bool threeCounts = n && n->tokens.size() == 5;  // ( nx ny nz )
+    // Read as a list, so that a length prefix (3(nx ny nz)) or a malformed entry is the
+    // dictionary's to judge; Grid checks the counts themselves.
+    const bool threeCounts = gridDict.get<std::vector<int>>("nCells").size() == 3;
     if (!gridDict.found("geometry")) return threeCounts ? 3 : 2;
     const std::string geometry = gridDict.getWord("geometry", {"planeStrain", "axisymmetric", "threeD"});
     if (geometry == "threeD") return 3;

@@ -85,8 +85,8 @@ template <int D> std::unique_ptr<Case<D>> readCase(const RunOptions& options)
     const std::string startName = startTimeName(dir, options, *c.timeControl);
 
     c.gridDict = readCaseFile(dir, "constant/grid");
-    if (caseDimension(c.gridDict) != D)
-        c.gridDict.fail("nCells", "constant/grid describes a " + std::to_string(caseDimension(c.gridDict)) +
+    if (const int dimension = caseDimension(c.gridDict); dimension != D)
+        c.gridDict.fail("nCells", "constant/grid describes a " + std::to_string(dimension) +
                                       "D scene, read as " + std::to_string(D) + "D");
     SolverInputs<D> in{Grid<D>(c.gridDict)};
     in.boundaries = readBoundaries<D>(c.gridDict);

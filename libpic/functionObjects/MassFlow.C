@@ -26,9 +26,6 @@ MassFlow<D>::MassFlow(const Dictionary& dict, const RunContext& context)
 
 template <int D> bool MassFlow<D>::insideRegion(const Vector& x) const
 {
-    if constexpr (D == 2)
-        return !(x.x() < region_->first.x() || x.y() < region_->first.y() || x.x() > region_->second.x() ||
-                 x.y() > region_->second.y());
     return !((x.array() < region_->first.array()).any() || (x.array() > region_->second.array()).any());
 }
 

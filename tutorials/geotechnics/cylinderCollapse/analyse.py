@@ -6,10 +6,9 @@ axis), kinetic energy at the end over its largest value, particles, steps, wall 
 Writes <run>/deposit.dat (r height of the last state)."""
 import math
 import os
-import re
 import sys
 sys.path.insert(0, os.path.join(os.environ['GPIC_DIR'], 'etc', 'python'))
-from gpicdat import deposit_front, last_state, read_columns, run_status
+from gpicdat import cell_size, deposit_front, last_state, read_columns, run_status, write_deposit
 
 d = sys.argv[1]
 R0 = 0.1
@@ -17,10 +16,8 @@ finished, particles, steps, wall = run_status(d)
 last, a = last_state(d)
 rs = [math.hypot(p[0], p[2]) for p in a['Points']]  # z = 0 in the axisymmetric plane
 ys = [p[1] for p in a['Points']]
-with open(os.path.join(d, 'deposit.dat'), 'w') as f:
-    for r, y in zip(rs, ys):
-        f.write('%g %g\n' % (r, y))
-h = float(re.search(r'cellSize\s+([0-9.e-]+);', open(os.path.join(d, 'constant', 'grid')).read()).group(1))
+write_deposit(d, rs, ys)
+h = cell_size(d)
 front = deposit_front(rs, ys, h, 0.1 * R0)
 top = max(y for r, y in zip(rs, ys) if r < 0.02)
 Ek = read_columns(os.path.join(d, 'postProcessing', 'motion', '0', 'bodyMotion.dat'))['Ek']
