@@ -4,6 +4,8 @@
 #include "coupling/LocalDamping.H"
 #include "engine/EnginePass.H"
 
+#include <algorithm>
+
 namespace gpic {
 
 GPIC_REGISTER(GridCoupling<2>, MultiField, "multiField");
@@ -50,7 +52,52 @@ void MultiField::particlesToGrid(EngineView<2>& e, double t)
     });
     grid.velocitiesFromMomenta();
     e.sides.constrain(grid.velocity);
+    findToolSideNodes(e);
     bodyVelocities(e, t);
+}
+
+void MultiField::findToolSideNodes(const EngineView<2>& e)
+{
+    toolSideNodes_.clear();
+    if (e.rigid.empty()) return;
+    const auto covered = [&](int n) {
+        for (int b = 0; b < contact_->nBodies(); ++b)
+            if (e.rigid[b] && contact_->field(b).mass[n] > 0.0) return true;
+        return false;
+    };
+    for (int s = 0; s < GridSides<2>::count; ++s) {
+        const auto side = static_cast<GridSide>(s);
+        if (!e.sides.condition(side).isWall()) continue;
+        for (int n : e.sides.constrainedNodes(side)) {
+            if (!covered(n)) continue;
+            const unsigned bit = 1u << sideAxis(side);
+            auto it = std::find_if(toolSideNodes_.begin(), toolSideNodes_.end(),
+                                   [n](const ToolSideNode& t) { return t.node == n; });
+            if (it == toolSideNodes_.end()) toolSideNodes_.push_back({n, bit});
+            else it->heldAxes |= bit;
+        }
+    }
+}
+
+void MultiField::constrainBody(EngineView<2>& e, std::vector<Vector2>& velocity, std::vector<Vector2>* accel,
+                               double dt)
+{
+    keptVelocity_.clear();
+    keptAccel_.clear();
+    for (const ToolSideNode& t : toolSideNodes_) {
+        keptVelocity_.push_back(velocity[t.node]);
+        if (accel) keptAccel_.push_back((*accel)[t.node]);
+    }
+    if (accel) e.sides.constrainUpdate(velocity, *accel, dt);
+    else e.sides.constrain(velocity);
+    for (std::size_t k = 0; k < toolSideNodes_.size(); ++k) {
+        const ToolSideNode& t = toolSideNodes_[k];
+        for (int a = 0; a < 2; ++a) {
+            if (t.heldAxes & (1u << a)) continue;
+            velocity[t.node][a] = keptVelocity_[k][a];
+            if (accel) (*accel)[t.node][a] = keptAccel_[k][a];
+        }
+    }
 }
 
 void MultiField::bodyVelocities(EngineView<2>& e, double t)
@@ -67,15 +114,14 @@ void MultiField::bodyVelocities(EngineView<2>& e, double t)
         grid.forEachActiveNode([&](int n) {
             if (f.mass[n] > 0.0) f.velocity[n] = f.momentum[n] / f.mass[n];
         });
-        e.sides.constrain(f.velocity);
+        constrainBody(e, f.velocity, nullptr, 0.0);
     }
 }
 
 void MultiField::constrainBodies(EngineView<2>& e, double dt)
 {
     for (int b = 0; b < contact_->nBodies(); ++b)
-        if (e.rigid.empty() || !e.rigid[b])
-            e.sides.constrainUpdate(contact_->field(b).velocity, contact_->field(b).accel, dt);
+        if (e.rigid.empty() || !e.rigid[b]) constrainBody(e, contact_->field(b).velocity, &contact_->field(b).accel, dt);
 }
 
 void MultiField::updateGrid(EngineView<2>& e, double tNew, double dt)
