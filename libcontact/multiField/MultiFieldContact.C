@@ -61,9 +61,10 @@ void MultiFieldContact::correctRemapped(Grid<2>& grid, const std::vector<std::un
     if (!remappedChoiceMade_) {  // the scheme remaps (MUSL): a choice the scene has to make
         remappedChoiceMade_ = true;
         warning(fileName_, 0,
-                "keyword 'correctRemapped' not given (default no): with velocities remapped from the particles "
-                "(MUSL) a body resting on another gains energy unless it is 'yes'; 'no' keeps the seed's contact "
-                "pass (doc/contact.md)");
+                "keyword 'correctRemapped' not given (default no, the seed's contact pass): 'no' suits a tool "
+                "pushing or followed by material, as in the tool tutorials; under MUSL a deformable body left "
+                "resting on another (a block on a plate) needs 'yes', or it gains energy and lifts off "
+                "(doc/contact.md, \"Which correctRemapped\")");
     }
     if (correctRemapped_ && !contactNodes_.empty()) correctNodes(grid, rigid, tNew, 0.0, nullptr);
 }

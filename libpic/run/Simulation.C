@@ -57,6 +57,10 @@ Simulation<D>::Simulation(const RunOptions& options, std::unique_ptr<Case<D>> c)
     guard_ = std::make_unique<StabilityGuard<D>>(case_->stability, solver_, case_->context.bodyNames, case_->gravity,
                                               case_->hasLoads, snapshotFile());
     if (options_.tuneThreads && threadCount() > 1) tuner_ = std::make_unique<ThreadTuner>(threadCount());
+    std::vector<bool> rigid(case_->context.bodyNames.size());
+    for (std::size_t b = 0; b < rigid.size(); ++b) rigid[b] = solver_.rigidBody(static_cast<int>(b)) != nullptr;
+    if (std::find(rigid.begin(), rigid.end(), true) != rigid.end())
+        toolWatch_ = std::make_unique<ToolForceWatch<D>>(case_->context.bodyNames, rigid);
     // Every keyword has been read by now: what is left is a typo or a leftover.
     case_->warnUnused();
 
@@ -327,6 +331,15 @@ void Simulation<D>::checkStep()
     }
     if (trip) stop(trip, "");
     watchKineticRatio();
+    watchTools();
+}
+
+template <int D>
+void Simulation<D>::watchTools()
+{
+    if (!toolWatch_) return;
+    for (const std::string& line : toolWatch_->add(time_, solver_.rigidBodyLoads()))
+        std::cerr << "Warning: at t = " << time_ << " s (step " << step_ << ") " << line << "\n";
 }
 
 template <int D>
