@@ -6,6 +6,8 @@
 //     state): Rankine's K_a = (1 - sin phi) / (1 + sin phi).
 //   - Translating away on a rough floor, rough (delta 20 deg) against smooth: Coulomb's
 //     wedge with wall friction, whose horizontal thrust is 0.838 of Rankine's.
+//   - A wall whose force swings ever wider (the cell-mean dilatation at its foot) is warned of,
+//     naming the wall, before the stability guard stops the run.
 #include "support/CaseRunner.H"
 
 #include <cmath>
@@ -19,8 +21,8 @@ const double gamma_ = 1500 * 9.81, phi = M_PI / 6;
 
 //- The tutorial's active run on 20 cells, with the floor `floor`, wall friction `mu` and wall
 //  speed `speed` [m/s, reached over 0.2 s]; the case directory, run.
-fs::path runWall(const ScratchDir& scratch, const std::string& name, const std::string& floor, double mu, double speed,
-                 double endTime)
+fs::path writeWall(const ScratchDir& scratch, const std::string& name, const std::string& floor, double mu, double speed,
+                   double endTime)
 {
     const fs::path dir = scratch.path() / name;
     copyCase(tutorialPath("geotechnics/retainingWall"), dir);
@@ -29,6 +31,13 @@ fs::path runWall(const ScratchDir& scratch, const std::string& name, const std::
     replaceText(dir / "constant/rigidBodies", "(0.2 -0.01 0)", "(0.2 " + std::to_string(speed) + " 0)");
     setEntry(dir / "system/controlDict", "endTime", std::to_string(endTime));
     setEntry(dir / "system/controlDict", "writeInterval", std::to_string(endTime));
+    return dir;
+}
+
+fs::path runWall(const ScratchDir& scratch, const std::string& name, const std::string& floor, double mu, double speed,
+                 double endTime)
+{
+    const fs::path dir = writeWall(scratch, name, floor, mu, speed, endTime);
     runCase(dir);
     return dir;
 }
@@ -84,4 +93,26 @@ TEST(RetainingWall, wallFrictionLowersTheActiveThrustAsCoulombsWedge)
     const double rough = activeThrust(runWall(scratch, "rough", "fixed", std::tan(delta), -0.01, 0.6));
     // Coulomb 0.838, measured 0.836; friction that did not act would give 1.
     EXPECT_NEAR(rough / smooth, coulomb / rankine, 0.03);
+}
+
+TEST(RetainingWall, aWallForceThatSwingsEverWiderIsWarnedOfBeforeTheRunStops)
+{
+    // With the cell-mean dilatation the smooth wall on a smooth floor swings from 2 % (RMS) to
+    // 50 % of its thrust between 0.25 and 0.5 s, and the energy guard stops the run at 0.548 s
+    // (the backfill's particle at the wall's foot); damping 0.1 does not prevent it.
+    ScratchDir scratch("retainingWall");
+    const fs::path dir = writeWall(scratch, "cellMean", "slip", 0.0, -0.01, 0.6);
+    std::ofstream(dir / "system/mpmSchemes", std::ios::app) << "volumetricStrain cellMean;\n";
+    testing::internal::CaptureStderr();
+    std::string stop;
+    try {
+        runCase(dir);
+    } catch (const RunError& e) {
+        stop = e.what();
+    }
+    const std::string err = testing::internal::GetCapturedStderr();
+    const auto warned = err.find("rigid body 'wall': its contact force swings by");
+    ASSERT_NE(warned, std::string::npos) << err;
+    EXPECT_NE(err.find("volumetricStrain particle", warned), std::string::npos) << err;  // the cure it names
+    EXPECT_NE(stop.find("energy created by the steps"), std::string::npos) << stop;
 }

@@ -20,7 +20,7 @@ const double dt = 1e-4, F0 = 2000;  // [s], [N/m]: a retaining wall's thrust
 std::vector<std::pair<double, std::string>> watch(double duration, const std::function<double(double)>& swing,
                                                   bool wallIsRigid = true)
 {
-    ToolForceWatch<2> w({"backfill", "wall"}, {false, wallIsRigid});
+    ToolForceWatch<2> w({"backfill", "wall"}, {false, wallIsRigid}, "a quasi-static push needs damping 0.1");
     std::vector<std::pair<double, std::string>> warnings;
     std::vector<RigidBodyLoad<2>> loads(2);
     for (long k = 1; k * dt <= duration; ++k) {
@@ -67,7 +67,7 @@ TEST(ToolForceWatch, onlyRigidBodiesInContactAreWatched)
     const auto growing = [](double t) { return std::min(1.0, 0.05 * std::exp(t / 0.3)); };
     EXPECT_TRUE(watch(2.0, growing, false).empty());  // no rigid body: the backfill is not watched
     // A tool that has left the material: zero force, no swing to measure.
-    ToolForceWatch<2> w({"wall"}, {true});
+    ToolForceWatch<2> w({"wall"}, {true}, "damping 0.1");
     std::vector<RigidBodyLoad<2>> loads(1);
     for (long k = 1; k < 20000; ++k) EXPECT_TRUE(w.add(k * dt, loads).empty());
 }

@@ -109,6 +109,7 @@ template <int D> std::unique_ptr<Case<D>> readCase(const RunOptions& options)
         schemes.fail("xpicOrder", "xpicOrder belongs to transfer XPIC, not " + transferName);
     // particle: each particle's own dilatation (the seed); cellMean: CellMeanDilatation.H
     in.cellMeanDilatation = schemes.getWordOrDefault("volumetricStrain", {"particle", "cellMean"}, "particle") == "cellMean";
+    c.volumetricStrainName = in.cellMeanDilatation ? "cellMean" : "particle";
     c.sortInterval = schemes.getOrDefault<long>("sortInterval", 100);
     if (c.sortInterval < 0) schemes.fail("sortInterval", "sortInterval must be >= 0 (0: never sort)");
     c.scheme = Registry<UpdateScheme>::select(c.schemeName, schemes, schemes, "updateScheme");

@@ -60,14 +60,19 @@ Simulation<D>::Simulation(const RunOptions& options, std::unique_ptr<Case<D>> c)
     std::vector<bool> rigid(case_->context.bodyNames.size());
     for (std::size_t b = 0; b < rigid.size(); ++b) rigid[b] = solver_.rigidBody(static_cast<int>(b)) != nullptr;
     if (std::find(rigid.begin(), rigid.end(), true) != rigid.end())
-        toolWatch_ = std::make_unique<ToolForceWatch<D>>(case_->context.bodyNames, rigid);
+        toolWatch_ = std::make_unique<ToolForceWatch<D>>(
+            case_->context.bodyNames, rigid,
+            case_->volumetricStrainName == "cellMean"
+                ? "measured at a wall's foot with volumetricStrain cellMean, which damping does not cure: use "
+                  "volumetricStrain particle in system/mpmSchemes"
+                : "a quasi-static push needs damping 0.1 in system/controlDict");
     // Every keyword has been read by now: what is left is a typo or a leftover.
     case_->warnUnused();
 
     log() << "Case " << case_->name << ": " << solver_.particles().size() << " particles, " << solver_.grid().nx();
     for (int a = 1; a < D; ++a) log() << " x " << solver_.grid().cells(a);
-    log() << " cells, scheme " << case_->schemeName << ", shape functions "
-          << case_->shapeName << ", starting at t = " << time_ << " (" << case_->context.startTimeName << ")\n";
+    log() << " cells, scheme " << case_->schemeName << ", shape functions " << case_->shapeName
+          << ", volumetric strain " << case_->volumetricStrainName << ", starting at t = " << time_ << " (" << case_->context.startTimeName << ")\n";
     if (const ContactPass<D>* contact = solver_.contact())
         log() << "Contact pass: " << contact->nBodies() << " bodies with their own velocity fields, "
               << contact->summary() << "\n";

@@ -2,13 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <sstream>
 
 namespace gpic {
 
 template <int D>
-ToolForceWatch<D>::ToolForceWatch(std::vector<std::string> names, std::vector<bool> rigid, Limits limits)
-    : limits_(limits)
+ToolForceWatch<D>::ToolForceWatch(std::vector<std::string> names, std::vector<bool> rigid, std::string cure,
+                                  Limits limits)
+    : limits_(limits), cure_(std::move(cure))
 {
     bodies_.resize(names.size());
     for (std::size_t b = 0; b < names.size(); ++b) {
@@ -53,7 +55,7 @@ template <int D> std::string ToolForceWatch<D>::closeWindow(Body& b, double t)
     b.swings.push_back(swing);
     const std::size_t keep = static_cast<std::size_t>(limits_.persist + limits_.lookBack);
     while (b.swings.size() > keep) b.swings.pop_front();
-    if (b.swings.size() < keep) return {};
+    if (b.swings.size() < static_cast<std::size_t>(limits_.persist + 1)) return {};  // one window before them
 
     const auto recent = b.swings.end() - limits_.persist;
     if (!std::all_of(recent, b.swings.end(), [&](double s) { return s > limits_.swing; })) return {};
@@ -63,10 +65,11 @@ template <int D> std::string ToolForceWatch<D>::closeWindow(Body& b, double t)
     if (smallest < 0 || *recent < limits_.growth * smallest) return {};
     b.reported = true;
     std::ostringstream line;
-    line << "rigid body '" << b.name << "': its contact force swings by " << 100 * swing << " % (RMS) of its mean at t = "
-         << t << " s, up from " << 100 * smallest << " % " << limits_.window * (limits_.persist + limits_.lookBack)
-         << " s before, and growing: energy is being made at the tool. A quasi-static push needs `damping 0.1` in "
-            "system/controlDict (doc/stability.md, \"Tools\")";
+    line << std::setprecision(2) << "rigid body '" << b.name << "': its contact force swings by " << 100 * swing
+         << " % (RMS) of its mean, up from " << 100 * smallest << " % in the "
+         << limits_.window * static_cast<double>(b.swings.size() - static_cast<std::size_t>(limits_.persist))
+         << " s before, and growing: energy is being made at the tool; " << cure_
+         << " (doc/stability.md, \"Tools\")";
     return line.str();
 }
 
