@@ -230,3 +230,17 @@ def settled_window_mean(path, settlement, pressure, lo, hi):
     if not window or end < lo:
         sys.exit(f'{path}: the push reached {end:.1f} mm, short of the window {lo:g}..{hi:g} mm')
     return sum(window) / len(window)
+
+
+def report_footing(case, path, settlement, pressure, reference, c, lo, hi, series):
+    """A footing's collapse pressure from its settlement [mm] and pressure [kPa] series: prints
+    q_u (the mean over lo ... hi mm), its error against `reference` [kPa] in %, q_u / c, the peak
+    pressure and the settlement reached; with `series` also writes <case>/pressure.dat
+    (settlement [mm], P [kPa], P / c)."""
+    q_u = settled_window_mean(path, settlement, pressure, lo, hi)
+    print(f'{q_u:.1f} {(q_u - reference) / reference * 100:.2f} {q_u * 1e3 / c:.3f} '
+          f'{max(pressure):.1f} {settlement[-1]:.1f}')
+    if series:
+        rows = ['%.4f %.3f %.4f' % (s, p, p * 1e3 / c) for s, p in zip(settlement, pressure)]
+        with open(os.path.join(case, 'pressure.dat'), 'w') as f:
+            f.write('# settlement [mm] footing pressure P [kPa] P / c\n' + '\n'.join(rows) + '\n')

@@ -29,7 +29,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.join(os.environ.get('GPIC_DIR', '../../..'), 'etc', 'python'))
-from gpicdat import read_columns, settled_window_mean  # noqa: E402
+from gpicdat import read_columns, report_footing  # noqa: E402
 
 C = 26e3            # cohesion [Pa] (constant/materials)
 R = 0.2             # footing radius [m] (constant/bodies)
@@ -55,14 +55,7 @@ def main():
     cols = read_columns(path)
     settlement = [-dy * 1e3 for dy in cols['footing:dy']]                       # mm
     pressure = [f / (math.pi * R * R) / 1e3 for f in cols['footing:Faxial']]   # kPa
-    end = settlement[-1]
-    q_u = settled_window_mean(path, settlement, pressure, lo, hi)
-    print(f'{q_u:.1f} {(q_u - reference) / reference * 100:.2f} {q_u * 1e3 / C:.3f} '
-          f'{max(pressure):.1f} {end:.1f}')
-    if '-series' in sys.argv:
-        rows = ['%.4f %.3f %.4f' % (s, p, p * 1e3 / C) for s, p in zip(settlement, pressure)]
-        with open(os.path.join(case, 'pressure.dat'), 'w') as f:
-            f.write('# settlement [mm] footing pressure P [kPa] P / c\n' + '\n'.join(rows) + '\n')
+    report_footing(case, path, settlement, pressure, reference, C, lo, hi, '-series' in sys.argv)
 
 
 if __name__ == '__main__':
