@@ -398,6 +398,46 @@ TEST_F(DictionaryFiles, MissingIncludeIsAnErrorAtTheDirective)
     EXPECT_EQ(Dictionary::readFile(optional).keys(), std::vector<std::string>{"a"});
 }
 
+TEST_F(DictionaryFiles, FilesThatAreNoDictionaryAreRefusedBeforeTheyAreRead)
+{
+    // A device would be read until memory runs out, a pipe would block.
+    const std::string zero = write("zero", "#include \"/dev/zero\"\n");
+    EXPECT_ERROR_STARTS(Dictionary::readFile(zero, "system/controlDict"),
+                        "system/controlDict:1: #include file \"/dev/zero\": not a regular file");
+    EXPECT_ERROR_STARTS(Dictionary::readFile("/dev/zero"), "/dev/zero: not a regular file");
+    // #includeIfPresent skips a file that is not there, not one that is wrong.
+    EXPECT_ERROR_STARTS(Dictionary::parse("#includeIfPresent \"/dev/zero\"\n", "f"),
+                        "f:1: #include file \"/dev/zero\": not a regular file");
+    // A file far larger than any case dictionary (sparse: no disk used).
+    const fs::path big = dir_ / "big";
+    std::ofstream(big).close();
+    fs::resize_file(big, (64u << 20) + 1);
+    EXPECT_ERROR_STARTS(Dictionary::readFile(big.string(), "constant/bodies"), big.string() + ": larger than 64 MiB");
+}
+
+TEST_F(DictionaryFiles, AByteOrderMarkIsNotPartOfTheText)
+{
+    const std::string path = write("bom", "\xEF\xBB\xBF// an editor's UTF-8 mark\na 1;\nb { c 2; }\n");
+    const Dictionary d = Dictionary::readFile(path, "constant/g");
+    EXPECT_EQ(d.keys(), (std::vector<std::string>{"a", "b"}));
+    EXPECT_EQ(d.lineOf("a"), 2);
+}
+
+TEST(Dictionary, SubDictionariesNestedTooDeepAreAnErrorNotACrash)
+{
+    // 30 000 levels overflowed the parser's stack (exit 139); 64 are allowed.
+    const auto nested = [](int depth) {
+        std::string text;
+        for (int k = 0; k < depth; ++k) text += "a {\n";
+        text += "x 1;\n";
+        for (int k = 0; k < depth; ++k) text += "}\n";
+        return text;
+    };
+    EXPECT_NO_THROW(Dictionary::parse(nested(64), "f"));
+    EXPECT_ERROR_STARTS(Dictionary::parse(nested(65), "f"), "f:65: sub-dictionary 'a' nested more than 64 deep");
+    EXPECT_ERROR_STARTS(Dictionary::parse(nested(30000), "f"), "f:65: sub-dictionary 'a' nested more than 64 deep");
+}
+
 TEST_F(DictionaryFiles, ErrorsInsideAnIncludedFileNameThatFile)
 {
     write("inc", "x 1;\ny 2\n");

@@ -2,6 +2,7 @@
 // would be kept and the user's model silently never run.
 #include "core/Plugins.H"
 #include "core/error.H"
+#include "dictionary/Dictionary.H"
 #include "materials/Material.H"
 
 #include <gtest/gtest.h>
@@ -25,4 +26,17 @@ TEST(PluginRegistry, aLibraryRegisteringATakenNameIsAnErrorNamingBothLibraries)
     }
     // The project's type stays the one selected.
     EXPECT_EQ(Registry<Material<2>>::table().at("linearElastic").library, builtIn);
+}
+
+TEST(PluginRegistry, anEmptyLibraryNameIsAnError)
+{
+    // dlopen("") hands back the program itself: the library the user meant would silently
+    // never be loaded.
+    const Dictionary control = Dictionary::parse("\nlibs (\"\");\n", "system/controlDict");
+    try {
+        Plugins::open(control, "libs");
+        FAIL() << "no error";
+    } catch (const InputError& e) {
+        EXPECT_EQ(std::string(e.what()).rfind("system/controlDict:2: libs: an empty library name", 0), 0u) << e.what();
+    }
 }

@@ -52,8 +52,14 @@ void Plugins::registrationConflict(const std::string& kind, const std::string& n
 void Plugins::open(const std::string& library, const std::string& file, int line)
 {
     auto& list = openedList();
+    // dlopen("") would hand back the program itself and load nothing, silently.
+    if (library.empty())
+        throw InputError(file, line, "libs: an empty library name; give its file, e.g. (\"libmyMaterial.so\")");
     if (std::find(list.begin(), list.end(), library) != list.end()) return;
     pendingConflicts().clear();
+    // Named before its initialisation runs (and flushed): a library whose static constructors
+    // crash is then the last line of the log.
+    info() << "Loading library " << library << std::endl;
     opening() = true;
     void* handle = dlopen(library.c_str(), RTLD_NOW | RTLD_GLOBAL);
     opening() = false;

@@ -27,7 +27,7 @@ std::string joined(const std::vector<std::string>& words)
 Dictionary Dictionary::readFile(const std::string& path, const std::string& displayName)
 {
     std::string text;
-    if (!DictionaryParser::readText(path, text)) throw InputError(path, 0, "cannot open file");
+    if (const std::string why = DictionaryParser::readText(path, text); !why.empty()) throw InputError(path, 0, why);
     Dictionary dict;
     DictionaryParser::parseFile(dict, text, displayName.empty() ? path : displayName, path);
     return dict;

@@ -14,6 +14,7 @@ namespace fs = std::filesystem;
 namespace {
 
 const int maxIncludeDepth = 32;  // deeper is almost surely a file including itself
+const int maxNestingDepth = 64;  // sub-dictionaries; the parser recurses, so this bounds its stack
 
 //- Expand `$VAR` and `${VAR}` from the environment (in #include paths).
 std::string expandEnvironment(const std::string& s, const Token& where)
@@ -148,6 +149,11 @@ void DictionaryParser::parseEntry(Dictionary& dict, const Token& keyword, Stream
     entry.line = keyword.line;
     if (!in.atEnd() && isPunct(in.peek().token, '{')) {
         const Token& open = in.next();
+        if (nestingDepth_ >= maxNestingDepth)
+            throw InputError(open.file, open.line,
+                             "sub-dictionary '" + keyword.text + "' nested more than " +
+                                 std::to_string(maxNestingDepth) + " deep in dictionary " + dict.name_ +
+                                 ": is a '}' missing?");
         // Created in place so that its parent link already works for macros inside it.
         entry.dict = std::make_shared<Dictionary>();
         Dictionary& sub = *entry.dict;
@@ -155,7 +161,9 @@ void DictionaryParser::parseEntry(Dictionary& dict, const Token& keyword, Stream
         sub.file_ = keyword.file;
         sub.startLine_ = keyword.line;
         sub.parent_ = &dict;
+        ++nestingDepth_;
         parseEntries(sub, in, &open);
+        --nestingDepth_;
     } else {
         const Dictionary* copied = nullptr;
         entry.tokens = parseValue(dict, keyword, in, copied);
@@ -249,11 +257,12 @@ void DictionaryParser::parseInclude(Dictionary& dict, const Token& directive, St
         displayName = (fs::path(directive.file).parent_path() / path).lexically_normal().string();
     }
     std::string text;
-    if (!readText(realPath, text)) {
-        if (optional) return;
+    if (const std::string why = readText(realPath, text); !why.empty()) {
+        if (optional && why == "cannot open file") return;
         throw InputError(directive.file, directive.line,
-                         "cannot open #include file \"" + name.text + "\" (looked for " +
-                             realPath + ")");
+                         (why == "cannot open file" ? "cannot open #include file \"" + name.text + "\""
+                                                    : "#include file \"" + name.text + "\": " + why) +
+                             " (looked for " + realPath + ")");
     }
     realPaths_[displayName] = realPath;
     Stream included{tokenize(text, displayName)};

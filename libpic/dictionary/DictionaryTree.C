@@ -111,16 +111,26 @@ void DictionaryParser::setUsed(const Entry& entry, bool used)
         for (const Entry& e : entry.dict->entries_) setUsed(e, used);
 }
 
-bool DictionaryParser::readText(const std::string& path, std::string& text)
+std::string DictionaryParser::readText(const std::string& path, std::string& text)
 {
+    namespace fs = std::filesystem;
+    // The largest case dictionary we expect is a few MiB of points; more is a wrong file.
+    constexpr std::uintmax_t maxBytes = 64u << 20;
     std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) return false;  // opens, but cannot be read
+    const fs::file_status status = fs::status(path, ec);
+    if (ec || !fs::exists(status)) return "cannot open file";
+    // A device or a pipe could be read without end (#include "/dev/zero"), a folder not at all.
+    if (!fs::is_regular_file(status)) return "not a regular file";
+    const std::uintmax_t size = fs::file_size(path, ec);
+    if (!ec && size > maxBytes) return "larger than 64 MiB (" + std::to_string(size) + " bytes): not a case dictionary";
     std::ifstream file(path);
-    if (!file) return false;
+    if (!file) return "cannot open file";
     std::ostringstream buffer;
     buffer << file.rdbuf();
     text = buffer.str();
-    return true;
+    // Some editors begin a UTF-8 file with a byte-order mark; it is not part of the text.
+    if (text.compare(0, 3, "\xEF\xBB\xBF") == 0) text.erase(0, 3);
+    return {};
 }
 
 } // namespace gpic
