@@ -28,19 +28,20 @@ template <int D> std::vector<std::string> ToolForceWatch<D>::add(double t, const
     for (std::size_t k = 0; k < bodies_.size(); ++k) {
         Body& b = bodies_[k];
         if (!b.watched || b.reported) continue;
-        b.sum += loads[k].force;
         b.samples.push_back(loads[k].force);
         if (!closing) continue;
-        std::string line = closeWindow(b, t);
+        std::string line = closeWindow(b);
         if (!line.empty()) lines.push_back(std::move(line));
     }
     if (closing) windowStart_ = t;
     return lines;
 }
 
-template <int D> std::string ToolForceWatch<D>::closeWindow(Body& b, double t)
+template <int D> std::string ToolForceWatch<D>::closeWindow(Body& b)
 {
-    const Vector mean = b.sum / static_cast<double>(b.samples.size());
+    Vector mean = Vector::Zero();
+    for (const Vector& f : b.samples) mean += f;
+    mean /= static_cast<double>(b.samples.size());
     const double size = mean.norm();
     double swing = -1;  // -1: a window without contact
     b.largestMean = std::max(b.largestMean, size);
@@ -50,7 +51,6 @@ template <int D> std::string ToolForceWatch<D>::closeWindow(Body& b, double t)
         for (const Vector& f : b.samples) squares += (f.dot(u) - size) * (f.dot(u) - size);
         swing = std::sqrt(squares / static_cast<double>(b.samples.size())) / size;
     }
-    b.sum.setZero();
     b.samples.clear();
     b.swings.push_back(swing);
     const std::size_t keep = static_cast<std::size_t>(limits_.persist + limits_.lookBack);
