@@ -435,7 +435,9 @@ TEST(ThreeDCase, anOpenedDiscInTheFloorLetsOnlyTheMaterialAboveItOut)
     bool opened = false;
     for (std::size_t r = 0; r < rows.at("time").size(); ++r) {
         const double t = rows.at("time")[r];
-        if (t <= 0.1) EXPECT_EQ(rows.at("out")[r], 0.0) << "t = " << t << ": the gate is closed";
+        if (t <= 0.1) {
+            EXPECT_EQ(rows.at("out")[r], 0.0) << "t = " << t << ": the gate is closed";
+        }
         if (t > 0.2 && rows.at("out")[r] > 0.01) opened = true;
         EXPECT_NEAR(rows.at("mass")[r] + rows.at("out")[r], 2000.0 * 0.16 * 0.12 * 0.16, 1e-9);
     }

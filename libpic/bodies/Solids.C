@@ -1,6 +1,7 @@
-// The built-in 3D shapes (Shape.H): a box, a sphere, a cylinder between two points and a
-// polygon extruded along x3.
+// The built-in 3D shapes (Shape.H): a box, a sphere, a cylinder between two points, a
+// polygon extruded along x3 and a closed surface from CAD (STL).
 #include "bodies/PolygonShape.H"
+#include "bodies/TriSurface.H"
 
 #include "dictionary/Dictionary.H"
 
@@ -98,7 +99,24 @@ private:
     double zMin_, zMax_;
 };
 
+//- The solid a closed STL surface bounds (bodies/TriSurface.H for the keywords).
+class TriSurfaceShape : public Shape<3> {
+public:
+    explicit TriSurfaceShape(const Dictionary& d) : surface_(TriSurface::read(d)), box_(surface_.bounds()) {}
+    bool inside(const Vector3& x) const override
+    {
+        const bool inBox = (x.array() >= box_.first.array()).all() && (x.array() <= box_.second.array()).all();
+        return inBox && surface_.inside(x);  // the box first: the fill asks at every cell of the grid
+    }
+    std::pair<Vector3, Vector3> bounds() const override { return box_; }
+
+private:
+    TriSurface surface_;
+    std::pair<Vector3, Vector3> box_;
+};
+
 #if GPIC_WITH_3D
+GPIC_REGISTER(Shape<3>, TriSurfaceShape, "triSurface")
 GPIC_REGISTER(Shape<3>, BoxShape, "box")
 GPIC_REGISTER(Shape<3>, SphereShape, "sphere")
 GPIC_REGISTER(Shape<3>, CylinderShape, "cylinder")

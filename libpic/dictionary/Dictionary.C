@@ -44,7 +44,8 @@ Dictionary Dictionary::parse(const std::string& text, const std::string& fileNam
 
 Dictionary::Dictionary(const Dictionary& other)
     : name_(other.name_), file_(other.file_), startLine_(other.startLine_),
-      endLine_(other.endLine_), parent_(other.parent_), repeated_(other.repeated_)
+      endLine_(other.endLine_), parent_(other.parent_), repeated_(other.repeated_),
+      realPaths_(other.realPaths_)
 {
     // The copy's own parent stays the original's (it names the same place); everything below
     // it is a deep copy owned by, and linked to, the copy.
@@ -62,7 +63,8 @@ Dictionary& Dictionary::operator=(const Dictionary& other)
 Dictionary::Dictionary(Dictionary&& other) noexcept
     : name_(std::move(other.name_)), file_(std::move(other.file_)),
       startLine_(other.startLine_), endLine_(other.endLine_), parent_(other.parent_),
-      entries_(std::move(other.entries_)), repeated_(std::move(other.repeated_))
+      entries_(std::move(other.entries_)), repeated_(std::move(other.repeated_)),
+      realPaths_(std::move(other.realPaths_))
 {
     for (Entry& e : entries_)
         if (e.dict) e.dict->parent_ = this;  // names are unchanged: only the address moved
@@ -85,6 +87,7 @@ Dictionary& Dictionary::operator=(Dictionary&& other) noexcept
     endLine_ = other.endLine_;
     entries_ = std::move(other.entries_);
     repeated_ = std::move(other.repeated_);
+    realPaths_ = std::move(other.realPaths_);
     DictionaryParser::relink(*this);
     return *this;
 }

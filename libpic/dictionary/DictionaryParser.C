@@ -68,6 +68,8 @@ void DictionaryParser::parseFile(Dictionary& dict, const std::string& text,
     parser.realPaths_[displayName] = realPath;
     Stream in{tokenize(text, displayName)};
     parser.parseEntries(dict, in, nullptr);
+    dict.realPaths_ = std::make_shared<const std::map<std::string, std::string>>(std::move(parser.realPaths_));
+    relink(dict);
     dict.endLine_ = 1;
     for (char c : text) dict.endLine_ += c == '\n';
 }
@@ -269,6 +271,20 @@ void DictionaryParser::parseInclude(Dictionary& dict, const Token& directive, St
     ++includeDepth_;
     parseEntries(dict, included, nullptr);
     --includeDepth_;
+}
+
+std::string Dictionary::filePath(const std::string& keyword) const
+{
+    const std::string value = get<std::string>(keyword);
+    const Entry* e = findEntry(keyword);
+    const Token where = e->tokens.empty() ? Token{} : e->tokens.front();
+    const fs::path path = expandEnvironment(value, where);
+    if (path.empty()) fail(keyword, "'" + keyword + "' needs a file name");
+    if (path.is_absolute()) return path.string();
+    std::string holder = e->file;
+    if (realPaths_)
+        if (const auto found = realPaths_->find(e->file); found != realPaths_->end()) holder = found->second;
+    return (fs::path(holder).parent_path() / path).lexically_normal().string();
 }
 
 } // namespace gpic

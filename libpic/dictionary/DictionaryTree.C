@@ -44,6 +44,7 @@ void DictionaryParser::relink(Dictionary& dict)
         if (e.dict) {
             e.dict->parent_ = &dict;
             e.dict->name_ = dict.name_ + "/" + e.keyword;
+            e.dict->realPaths_ = dict.realPaths_;
             relink(*e.dict);
         }
 }

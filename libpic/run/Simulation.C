@@ -59,6 +59,8 @@ Simulation<D>::Simulation(const RunOptions& options, std::unique_ptr<Case<D>> c)
     if (options_.tuneThreads && threadCount() > 1) tuner_ = std::make_unique<ThreadTuner>(threadCount());
     std::vector<bool> rigid(case_->context.bodyNames.size());
     for (std::size_t b = 0; b < rigid.size(); ++b) rigid[b] = solver_.rigidBody(static_cast<int>(b)) != nullptr;
+    toolSurfaces_ = std::make_unique<ToolSurfaces<D>>(options_.caseDir, case_->context.bodyNames, rigid);
+    times_.alsoIndex(toolSurfaces_->fileNames());
     if (std::find(rigid.begin(), rigid.end(), true) != rigid.end())
         toolWatch_ = std::make_unique<ToolForceWatch<D>>(
             case_->context.bodyNames, rigid,
@@ -149,6 +151,7 @@ void Simulation<D>::writeState(const Particles<D>& particles, double time, long 
     writeTimeDirectoryAtomically(options_.caseDir, name, [&](const std::string& tmp) {
         writeParticles(tmp + "/particles.vtp", particles, time, case_->context.materialNames, case_->context.bodyNames);
         if (withGrid) writeGrid(tmp + "/grid.vti", solver_.grid(), time);
+        toolSurfaces_->write(tmp, particles, time);
         fs::create_directories(tmp + "/uniform");
         std::ofstream t(tmp + "/uniform/time");
         t << fileHeader("time") << "value   " << exactNumber(time) << ";\nname    \"" << name << "\";\nindex   " << step
@@ -273,15 +276,16 @@ void Simulation<D>::indexStart()
     const std::string& start = case_->context.startTimeName;
     PvdCollection pvd(pvdPath(options_.caseDir));
     pvd.removeAfter(time_);
-    pvd.add(time_, start + "/particles.vtp", 0);
-    if (case_->writeGrid) {  // every time of the index has the same parts: the start its grid too
-        const fs::path startGrid = fs::path(options_.caseDir) / start / "grid.vti";
-        if (!fs::exists(startGrid)) {
-            solver_.projectToGrid();
-            writeGrid(startGrid.string(), solver_.grid(), time_);
-        }
-        pvd.add(time_, start + "/grid.vti", 1);
+    // Every time of the index has the same parts: the start its grid and tool surfaces too.
+    const fs::path startDir = fs::path(options_.caseDir) / start;
+    if (case_->writeGrid && !fs::exists(startDir / "grid.vti")) {
+        solver_.projectToGrid();
+        writeGrid((startDir / "grid.vti").string(), solver_.grid(), time_);
     }
+    const auto surfaces = toolSurfaces_->fileNames();
+    if (std::any_of(surfaces.begin(), surfaces.end(), [&](const std::string& f) { return !fs::exists(startDir / f); }))
+        toolSurfaces_->write(startDir.string(), solver_.particles(), time_);
+    times_.index(pvd, time_, start);
     pvd.write();
 }
 

@@ -60,8 +60,7 @@ std::string TimeWriter::nameFor(double t)
         fs::rename(fs::path(caseDir_) / last.second, fs::path(caseDir_) / moved);
         PvdCollection pvd(pvdPath(caseDir_));
         pvd.removeTime(last.first);
-        pvd.add(last.first, moved + "/particles.vtp", 0);
-        if (withGrid_) pvd.add(last.first, moved + "/grid.vti", 1);
+        index(pvd, last.first, moved);
         pvd.write();
         if (onDisk_.name == last.second) onDisk_.name = moved;
         info() << "Time directory " << last.second << " (time " << std::setprecision(12) << last.first
@@ -85,8 +84,7 @@ void TimeWriter::written(double t, long step, const std::string& name)
 {
     onDisk_ = {t, step, name};
     PvdCollection pvd(pvdPath(caseDir_));
-    pvd.add(t, name + "/particles.vtp", 0);
-    if (withGrid_) pvd.add(t, name + "/grid.vti", 1);
+    index(pvd, t, name);
     // purgeWrite: like OpenFOAM, only directories this run wrote are removed, never the start.
     written_.push_back({t, name});
     while (purgeWrite_ > 0 && static_cast<int>(written_.size()) > purgeWrite_) {
@@ -100,10 +98,16 @@ void TimeWriter::written(double t, long step, const std::string& name)
 void TimeWriter::writtenOutOfTurn(double t, long step, const std::string& name)
 {
     PvdCollection pvd(pvdPath(caseDir_));
-    pvd.add(t, name + "/particles.vtp", 0);
-    if (withGrid_) pvd.add(t, name + "/grid.vti", 1);
+    index(pvd, t, name);
     pvd.write();
     onDisk_ = {t, step, name};
+}
+
+void TimeWriter::index(PvdCollection& pvd, double t, const std::string& name) const
+{
+    pvd.add(t, name + "/particles.vtp", 0);
+    if (withGrid_) pvd.add(t, name + "/grid.vti", 1);
+    for (std::size_t k = 0; k < moreParts_.size(); ++k) pvd.add(t, name + "/" + moreParts_[k], 2 + int(k));
 }
 
 std::string TimeWriter::newestPath() const { return (fs::path(caseDir_) / onDisk_.name).string(); }
