@@ -5,13 +5,14 @@
 
 namespace gpic {
 
-GPIC_REGISTER(ContactLaw<2>, CoulombFriction, "coulombFriction")
+GPIC_REGISTER_DIMS(ContactLaw, CoulombFriction, "coulombFriction")
 
 namespace {
 const auto nonNegative = [](const double& m) { return m >= 0; };
 } // namespace
 
-CoulombFriction::CoulombFriction(const Dictionary& dict, const std::vector<std::string>& bodyNames)
+template <int D>
+CoulombFriction<D>::CoulombFriction(const Dictionary& dict, const std::vector<std::string>& bodyNames)
     : nBodies_(bodyNames.size()),
       mu_(nBodies_ * nBodies_, dict.getChecked<double>("mu", nonNegative, "mu >= 0"))
 {
@@ -39,25 +40,44 @@ CoulombFriction::CoulombFriction(const Dictionary& dict, const std::vector<std::
     }
 }
 
-double CoulombFriction::mu(int a, int b) const
+template <int D> double CoulombFriction<D>::mu(int a, int b) const
 {
     return mu_[static_cast<std::size_t>(a) * nBodies_ + static_cast<std::size_t>(b)];
 }
 
-Vector2 CoulombFriction::correct(const Vector2& v, const Vector2& vRef, const Vector2& n, int body,
-                                 int other) const
+template <int D>
+typename CoulombFriction<D>::Vector CoulombFriction<D>::correct(const Vector& v, const Vector& vRef, const Vector& n,
+                                                                int body, int other) const
 {
-    const Vector2 vDiff = v - vRef;                              // G.2.22
-    const double D = vDiff.x() * n.x() + vDiff.y() * n.y();      // normal approach speed
-    if (D <= 0.0) return v;                                      // separating (G.2.1)
-    const double C = vDiff.x() * n.y() - vDiff.y() * n.x();      // G.2.23, sliding speed
-    Vector2 corrected = v - D * n;                               // G.2.3: stop the approach
-    if (C != 0.0) {
-        const double muEff = std::min(mu(body, other), std::abs(C) / D);  // G.2.18
-        const double s = C > 0.0 ? 1.0 : -1.0;
-        corrected -= (D * muEff * s) * Vector2(n.y(), -n.x());  // G.2.26-27
+    const Vector vDiff = v - vRef;  // G.2.22
+    if constexpr (D == 2) {
+        const double approach = vDiff.x() * n.x() + vDiff.y() * n.y();  // normal approach speed
+        if (approach <= 0.0) return v;                                  // separating (G.2.1)
+        const double C = vDiff.x() * n.y() - vDiff.y() * n.x();         // G.2.23, sliding speed
+        Vector corrected = v - approach * n;                            // G.2.3: stop the approach
+        if (C != 0.0) {
+            const double muEff = std::min(mu(body, other), std::abs(C) / approach);  // G.2.18
+            const double s = C > 0.0 ? 1.0 : -1.0;
+            corrected -= (approach * muEff * s) * Vector(n.y(), -n.x());  // G.2.26-27
+        }
+        return corrected;
+    } else {
+        const double approach = vDiff.dot(n);
+        if (approach <= 0.0) return v;
+        const Vector slide = vDiff - approach * n;  // the sliding velocity, across n
+        const double C = slide.norm();
+        Vector corrected = v - approach * n;
+        if (C > 0.0) {
+            const double muEff = std::min(mu(body, other), C / approach);
+            corrected -= (approach * muEff / C) * slide;  // against the sliding, never past it
+        }
+        return corrected;
     }
-    return corrected;
 }
+
+template class CoulombFriction<2>;
+#if GPIC_WITH_3D
+template class CoulombFriction<3>;
+#endif
 
 } // namespace gpic

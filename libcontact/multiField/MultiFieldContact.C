@@ -6,48 +6,48 @@
 
 namespace gpic {
 
-GPIC_REGISTER(ContactPass<2>, MultiFieldContact, "multiField")
+GPIC_REGISTER_DIMS(ContactPass, MultiFieldContact, "multiField")
 
 namespace {
-Vector2 unit(const Vector2& v)
+template <int D> typename Space<D>::Vector unit(const typename Space<D>::Vector& v)
 {
     const double len = v.norm();
-    return len > 0.0 ? Vector2(v / len) : Vector2::Zero();
+    return len > 0.0 ? typename Space<D>::Vector(v / len) : Space<D>::Vector::Zero();
 }
-
-inline double cross(const Vector2& a, const Vector2& b) { return a.x() * b.y() - a.y() * b.x(); }
 } // namespace
 
-MultiFieldContact::MultiFieldContact(const Dictionary& dict, ContactParts<2>& parts)
-    : ContactPass<2>(parts.nBodies, *parts.grid), law_(std::move(parts.law)), normals_(std::move(parts.normals)),
+template <int D>
+MultiFieldContact<D>::MultiFieldContact(const Dictionary& dict, ContactParts<D>& parts)
+    : ContactPass<D>(parts.nBodies, *parts.grid), law_(std::move(parts.law)), normals_(std::move(parts.normals)),
       normalsName_(parts.normalsName), correctRemapped_(dict.getOrDefault<bool>("correctRemapped", false)),
       remappedChoiceMade_(dict.found("correctRemapped")), fileName_(dict.fileName())
 {
-    present_.reserve(static_cast<std::size_t>(nBodies()));
+    present_.reserve(static_cast<std::size_t>(this->nBodies()));
 }
 
-Vector2 MultiFieldContact::correctVelocity(int b, int other, int n, const Vector2& vRef, const Vector2& normal,
-                                           bool approachOnly)
+template <int D>
+typename MultiFieldContact<D>::Vector MultiFieldContact<D>::correctVelocity(int b, int other, int n, const Vector& vRef,
+                                                                            const Vector& normal, bool approachOnly)
 {
-    BodyField<2>& f = field(b);
-    const Vector2 v = f.velocity[n];
+    BodyField<D>& f = this->field(b);
+    const Vector v = f.velocity[n];
     if (approachOnly) {
-        const double D = (v - vRef).dot(normal);  // G.2.22: the normal approach speed
-        if (D > 0.0) f.velocity[n] = v - D * normal;  // G.2.3
+        const double approach = (v - vRef).dot(normal);  // G.2.22: the normal approach speed
+        if (approach > 0.0) f.velocity[n] = v - approach * normal;  // G.2.3
     } else {
         f.velocity[n] = law_->correct(v, vRef, normal, b, other);
     }
     return f.velocity[n] - v;
 }
 
-int MultiFieldContact::correct(Grid<2>& grid, const Particles<2>& p,
-                               const std::vector<std::unique_ptr<RigidBodyDriver<2>>>& rigid, double tNew,
-                               double dt, std::vector<RigidBodyLoad<2>>& loads)
+template <int D>
+int MultiFieldContact<D>::correct(Grid<D>& grid, const Particles<D>& p, const Drivers& rigid, double tNew, double dt,
+                                  std::vector<RigidBodyLoad<D>>& loads)
 {
-    for (auto& l : loads) l = RigidBodyLoad<2>{};
+    for (auto& l : loads) l = RigidBodyLoad<D>{};
     contactNodes_.clear();
     for (int n : grid.active)
-        if (shared(n)) contactNodes_.push_back(n);
+        if (this->shared(n)) contactNodes_.push_back(n);
     if (contactNodes_.empty()) return 0;
     // Only on steps with contact: the normals where the bodies are now.
     normals_->place(grid, p, contactNodes_);
@@ -55,8 +55,7 @@ int MultiFieldContact::correct(Grid<2>& grid, const Particles<2>& p,
     return static_cast<int>(contactNodes_.size());
 }
 
-void MultiFieldContact::correctRemapped(Grid<2>& grid, const std::vector<std::unique_ptr<RigidBodyDriver<2>>>& rigid,
-                                        double tNew)
+template <int D> void MultiFieldContact<D>::correctRemapped(Grid<D>& grid, const Drivers& rigid, double tNew)
 {
     if (!remappedChoiceMade_) {  // the scheme remaps (MUSL): a choice the scene has to make
         remappedChoiceMade_ = true;
@@ -69,16 +68,18 @@ void MultiFieldContact::correctRemapped(Grid<2>& grid, const std::vector<std::un
     if (correctRemapped_ && !contactNodes_.empty()) correctNodes(grid, rigid, tNew, 0.0, nullptr);
 }
 
-void MultiFieldContact::correctNodes(Grid<2>& grid, const std::vector<std::unique_ptr<RigidBodyDriver<2>>>& rigid,
-                                     double tNew, double dt, std::vector<RigidBodyLoad<2>>* loads)
+template <int D>
+void MultiFieldContact<D>::correctNodes(Grid<D>& grid, const Drivers& rigid, double tNew, double dt,
+                                       std::vector<RigidBodyLoad<D>>* loads)
 {
-    const int nb = nBodies();
+    const auto field = [this](int b) -> BodyField<D>& { return this->field(b); };
+    const int nb = this->nBodies();
     const auto isRigid = [&](int b) { return !rigid.empty() && rigid[b] != nullptr; };
     // The step's correction: a~ = a + (v~ - v) / dt, so v~ = v^t + dt a~ (G.4.1), and the
     // force on body b is its impulse over dt.
-    const auto apply = [&](int b, int other, int n, const Vector2& vRef, const Vector2& normal) -> Vector2 {
-        const Vector2 dv = correctVelocity(b, other, n, vRef, normal, !loads);
-        if (!loads) return Vector2::Zero();
+    const auto apply = [&](int b, int other, int n, const Vector& vRef, const Vector& normal) -> Vector {
+        const Vector dv = correctVelocity(b, other, n, vRef, normal, !loads);
+        if (!loads) return Vector::Zero();
         field(b).accel[n] += dv / dt;
         return (field(b).mass[n] / dt) * dv;
     };
@@ -91,51 +92,56 @@ void MultiFieldContact::correctNodes(Grid<2>& grid, const std::vector<std::uniqu
             present_.push_back(b);
             if (isRigid(b) && (r < 0 || field(b).mass[n] > field(r).mass[n])) r = b;
         }
-        const Vector2 x = grid.nodePosition(n);
+        const Vector x = grid.nodePosition(n);
         if (r >= 0) {
             if (!normals_->acts(r, n, x)) continue;  // e.g. beyond a rigid surface's corner
             // Seed A14: only the deformable bodies are corrected, against the rigid velocity.
-            const Vector2 vRef = rigid[r]->velocity(tNew, x);
+            const Vector vRef = rigid[r]->velocity(tNew, x);
             for (int b : present_) {
                 if (isRigid(b)) continue;
-                const Vector2 normal = normals_->towardsRigid(b, r, n, x);
+                const Vector normal = normals_->towardsRigid(b, r, n, x);
                 if (normal.isZero()) continue;
-                const Vector2 f = apply(b, r, n, vRef, normal);
+                const Vector f = apply(b, r, n, vRef, normal);
                 if (!loads) continue;
                 (*loads)[b].force += f;
-                (*loads)[b].moment += cross(x, f);
+                (*loads)[b].moment += momentOf(x, f);
                 (*loads)[r].force -= f;
-                (*loads)[r].moment -= cross(x, f);
+                (*loads)[r].moment -= momentOf(x, f);
                 grid.fContact[n] -= f;
             }
             continue;
         }
         double mass = 0;
-        Vector2 momentum = Vector2::Zero();
+        Vector momentum = Vector::Zero();
         for (int b : present_) {
             mass += field(b).mass[n];
             momentum += field(b).mass[n] * field(b).velocity[n];
         }
-        const Vector2 vCm = momentum / mass;
-        Vector2 pairNormal = Vector2::Zero();
+        const Vector vCm = momentum / mass;
+        Vector pairNormal = Vector::Zero();
         if (present_.size() == 2)
-            pairNormal = unit(normals_->outward(present_[0], n) - normals_->outward(present_[1], n));
+            pairNormal = unit<D>(normals_->outward(present_[0], n) - normals_->outward(present_[1], n));
         for (std::size_t k = 0; k < present_.size(); ++k) {
             const int b = present_[k];
-            Vector2 normal;
-            if (present_.size() == 2) normal = k == 0 ? pairNormal : Vector2(-pairNormal);
+            Vector normal;
+            if (present_.size() == 2) normal = k == 0 ? pairNormal : Vector(-pairNormal);
             else normal = normals_->outward(b, n);
             if (normal.isZero()) continue;
             int other = -1;
             for (int o : present_)
                 if (o != b && (other < 0 || field(o).mass[n] > field(other).mass[n])) other = o;
-            const Vector2 f = apply(b, other, n, vCm, normal);
+            const Vector f = apply(b, other, n, vCm, normal);
             if (!loads) continue;
             (*loads)[b].force += f;
-            (*loads)[b].moment += cross(x, f);
+            (*loads)[b].moment += momentOf(x, f);
             if (k == 0) grid.fContact[n] += f;
         }
     }
 }
+
+template class MultiFieldContact<2>;
+#if GPIC_WITH_3D
+template class MultiFieldContact<3>;
+#endif
 
 } // namespace gpic

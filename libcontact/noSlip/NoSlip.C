@@ -2,6 +2,6 @@
 
 namespace gpic {
 
-GPIC_REGISTER(ContactLaw<2>, NoSlip, "noSlip")
+GPIC_REGISTER_DIMS(ContactLaw, NoSlip, "noSlip")
 
 } // namespace gpic

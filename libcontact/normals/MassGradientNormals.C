@@ -5,69 +5,120 @@
 
 namespace gpic {
 
-MassGradientNormals::MassGradientNormals(const Dictionary&, const ContactScene& scene) : nBodies_(scene.nBodies()) {}
+template <int D>
+MassGradientNormals<D>::MassGradientNormals(const Dictionary&, const ContactScene& scene) : nBodies_(scene.nBodies())
+{}
 
-void MassGradientNormals::place(const Grid<2>& grid, const Particles<2>& p, const std::vector<int>& nodes)
+template <int D> std::size_t MassGradientNormals<D>::cellCount() const
 {
-    nx_ = grid.nx();
-    ny_ = grid.ny();
+    std::size_t cells = 1;
+    for (int a = 0; a < D; ++a) cells *= static_cast<std::size_t>(n_[a]);
+    return cells;
+}
+
+template <int D>
+void MassGradientNormals<D>::place(const Grid<D>& grid, const Particles<D>& p, const std::vector<int>& nodes)
+{
+    for (int a = 0; a < D; ++a) n_[a] = grid.cells(a);
     h_ = grid.cellSize();
-    const auto cells = static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_);
+    const std::size_t cells = cellCount();
     density_.assign(static_cast<std::size_t>(nBodies_) * cells, 0.0);
     // Only the box of cells around the contact nodes is summed (outward() reads no others):
     // most particles are far from contact. One thread, in particle order, so that each sum
     // is the same at any thread count.
-    int iLow = nx_, iHigh = -1, jLow = ny_, jHigh = -1;
+    std::array<int, D> lowCell = n_, highCell;
+    highCell.fill(-1);
     for (int n : nodes) {
-        const int i = n % (nx_ + 1), j = n / (nx_ + 1);
-        iLow = std::min(iLow, std::max(i - 1, 0)), iHigh = std::max(iHigh, std::min(i, nx_ - 1));
-        jLow = std::min(jLow, std::max(j - 1, 0)), jHigh = std::max(jHigh, std::min(j, ny_ - 1));
+        const auto i = grid.nodeIndex(n);
+        for (int a = 0; a < D; ++a) {
+            lowCell[a] = std::min(lowCell[a], std::max(i[a] - 1, 0));
+            highCell[a] = std::max(highCell[a], std::min(i[a], n_[a] - 1));
+        }
     }
-    const Vector2 origin = grid.origin(), h = h_;
+    const Vector origin = grid.origin(), h = h_;
     // A particle reaches the centres of the cells within half a cell of its own: one beyond
     // these bounds (a cell's margin) adds to no cell of the box, and every cell of the box
     // gets all of its particles.
-    const Vector2 low = origin + Vector2((iLow - 1) * h.x(), (jLow - 1) * h.y());
-    const Vector2 high = origin + Vector2((iHigh + 2) * h.x(), (jHigh + 2) * h.y());
-    const Vector2* x = p.x.data();
+    Vector low, high;
+    for (int a = 0; a < D; ++a) {
+        low[a] = origin[a] + (lowCell[a] - 1) * h[a];
+        high[a] = origin[a] + (highCell[a] + 2) * h[a];
+    }
+    const Vector* x = p.x.data();
     const double* m = p.m.data();
     const int* body = p.body.data();
     for (std::size_t q = 0; q < p.size(); ++q) {
-        if (x[q].x() < low.x() || x[q].x() >= high.x() || x[q].y() < low.y() || x[q].y() >= high.y()) continue;
-        // Element centres within one cell of the particle, with bilinear weights S1.
-        const Vector2 s = Vector2((x[q] - origin).array() / h.array()) - Vector2(0.5, 0.5);
-        const int i0 = Grid<2>::floorToInt(s.x()), j0 = Grid<2>::floorToInt(s.y());
-        const double fx = s.x() - i0, fy = s.y() - j0;
+        bool outside = false;
+        for (int a = 0; a < D; ++a) outside = outside || x[q][a] < low[a] || x[q][a] >= high[a];
+        if (outside) continue;
+        // Element centres within one cell of the particle, with the weights S1 of the cell.
+        const Vector s = Vector((x[q] - origin).array() / h.array()) - Vector::Constant(0.5);
+        std::array<int, D> c0;
+        Vector f;
+        for (int a = 0; a < D; ++a) {
+            c0[a] = Grid<D>::floorToInt(s[a]);
+            f[a] = s[a] - c0[a];
+        }
         double* rho = density_.data() + static_cast<std::size_t>(body[q]) * cells;
-        for (int b = 0; b < 2; ++b)
-            for (int a = 0; a < 2; ++a) {
-                const int i = i0 + a, j = j0 + b;
-                if (i < 0 || j < 0 || i >= nx_ || j >= ny_) continue;
-                const double S1 = (a ? fx : 1.0 - fx) * (b ? fy : 1.0 - fy);
-                rho[i + j * nx_] += m[q] * S1;
-            }
+        if constexpr (D == 2) {
+            for (int b = 0; b < 2; ++b)
+                for (int a = 0; a < 2; ++a) {
+                    const int i = c0[0] + a, j = c0[1] + b;
+                    if (i < 0 || j < 0 || i >= n_[0] || j >= n_[1]) continue;
+                    const double S1 = (a ? f[0] : 1.0 - f[0]) * (b ? f[1] : 1.0 - f[1]);
+                    rho[i + j * n_[0]] += m[q] * S1;
+                }
+        } else {
+            for (int c = 0; c < 2; ++c)
+                for (int b = 0; b < 2; ++b)
+                    for (int a = 0; a < 2; ++a) {
+                        const int i = c0[0] + a, j = c0[1] + b, k = c0[2] + c;
+                        if (i < 0 || j < 0 || k < 0 || i >= n_[0] || j >= n_[1] || k >= n_[2]) continue;
+                        const double S1 = (a ? f[0] : 1.0 - f[0]) * (b ? f[1] : 1.0 - f[1]) * (c ? f[2] : 1.0 - f[2]);
+                        rho[i + n_[0] * (j + n_[1] * k)] += m[q] * S1;
+                    }
+        }
     }
 }
 
-Vector2 MassGradientNormals::outward(int body, int node) const
+template <int D> typename MassGradientNormals<D>::Vector MassGradientNormals<D>::outward(int body, int node) const
 {
-    const auto cells = static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_);
-    const double* rho = density_.data() + static_cast<std::size_t>(body) * cells;
-    const int i = node % (nx_ + 1), j = node / (nx_ + 1);
+    const double* rho = density_.data() + static_cast<std::size_t>(body) * cellCount();
+    const int i = node % (n_[0] + 1);
     // c_cv of the node in each element around it points from the element centre to the
     // node (G.3): the sum of c_cv rho_c points away from the dense side.
-    Vector2 g = Vector2::Zero();
-    for (int b = -1; b <= 0; ++b)
-        for (int a = -1; a <= 0; ++a) {
-            const int ci = i + a, cj = j + b;
-            if (ci < 0 || cj < 0 || ci >= nx_ || cj >= ny_) continue;
-            const double r = rho[ci + cj * nx_];
-            g += r * Vector2(a < 0 ? h_.y() : -h_.y(), b < 0 ? h_.x() : -h_.x());
-        }
+    Vector g = Vector::Zero();
+    if constexpr (D == 2) {
+        const int j = node / (n_[0] + 1);
+        for (int b = -1; b <= 0; ++b)
+            for (int a = -1; a <= 0; ++a) {
+                const int ci = i + a, cj = j + b;
+                if (ci < 0 || cj < 0 || ci >= n_[0] || cj >= n_[1]) continue;
+                const double r = rho[ci + cj * n_[0]];
+                g += r * Vector(a < 0 ? h_.y() : -h_.y(), b < 0 ? h_.x() : -h_.x());
+            }
+    } else {
+        const int j = (node / (n_[0] + 1)) % (n_[1] + 1), k = node / ((n_[0] + 1) * (n_[1] + 1));
+        // The faces of a cell normal to each axis, their areas up to the common factor.
+        const Vector face(h_[1] * h_[2], h_[0] * h_[2], h_[0] * h_[1]);
+        for (int c = -1; c <= 0; ++c)
+            for (int b = -1; b <= 0; ++b)
+                for (int a = -1; a <= 0; ++a) {
+                    const int ci = i + a, cj = j + b, ck = k + c;
+                    if (ci < 0 || cj < 0 || ck < 0 || ci >= n_[0] || cj >= n_[1] || ck >= n_[2]) continue;
+                    const double r = rho[ci + n_[0] * (cj + n_[1] * ck)];
+                    g += r * Vector(a < 0 ? face[0] : -face[0], b < 0 ? face[1] : -face[1], c < 0 ? face[2] : -face[2]);
+                }
+    }
     const double len = g.norm();
-    return len > 0.0 ? Vector2(g / len) : Vector2::Zero();
+    return len > 0.0 ? Vector(g / len) : Vector::Zero();
 }
 
-GPIC_REGISTER(ContactNormals<2>, MassGradientNormals, "massGradient")
+template class MassGradientNormals<2>;
+#if GPIC_WITH_3D
+template class MassGradientNormals<3>;
+#endif
+
+GPIC_REGISTER_DIMS(ContactNormals, MassGradientNormals, "massGradient")
 
 } // namespace gpic

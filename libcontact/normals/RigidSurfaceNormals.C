@@ -4,8 +4,9 @@
 
 namespace gpic {
 
-RigidSurfaceNormals::RigidSurfaceNormals(const Dictionary& dict, const ContactScene& scene)
-    : MassGradientNormals(dict, scene), surfaces_(scene.bodyNames.size())
+template <int D>
+RigidSurfaceNormals<D>::RigidSurfaceNormals(const Dictionary& dict, const ContactScene& scene)
+    : MassGradientNormals<D>(dict, scene), surfaces_(scene.bodyNames.size())
 {
     const Dictionary bodies = readCaseFile(scene.caseDir, "constant/bodies");
     for (std::size_t b = 0; b < scene.bodyNames.size(); ++b) {
@@ -13,28 +14,38 @@ RigidSurfaceNormals::RigidSurfaceNormals(const Dictionary& dict, const ContactSc
         if (!bodies.isDict(scene.bodyNames[b]))
             dict.fail("normals", "rigidSurface needs the shape of rigid body '" + scene.bodyNames[b] +
                                      "', which constant/bodies does not define");
-        surfaces_[b] = std::make_unique<RigidSurface>(bodies.subDict(scene.bodyNames[b]).subDict("shape"));
+        surfaces_[b] = std::make_unique<Surface>(bodies.subDict(scene.bodyNames[b]).subDict("shape"));
     }
 }
 
-void RigidSurfaceNormals::place(const Grid<2>& grid, const Particles<2>& p, const std::vector<int>& nodes)
+template <int D>
+void RigidSurfaceNormals<D>::place(const Grid<D>& grid, const Particles<D>& p, const std::vector<int>& nodes)
 {
-    MassGradientNormals::place(grid, p, nodes);
-    for (std::size_t b = 0; b < surfaces_.size(); ++b)
-        if (surfaces_[b]) surfaces_[b]->place(p, static_cast<int>(b));
+    MassGradientNormals<D>::place(grid, p, nodes);
+    for (std::size_t b = 0; b < surfaces_.size(); ++b) {
+        if (!surfaces_[b]) continue;
+        if constexpr (D == 2) surfaces_[b]->place(p, static_cast<int>(b));
+        else surfaces_[b]->place(p, static_cast<int>(b), grid.cellSize().maxCoeff());
+    }
 }
 
-bool RigidSurfaceNormals::acts(int r, int /*n*/, const Vector2& x) const
+template <int D> bool RigidSurfaceNormals<D>::acts(int r, int /*n*/, const Vector& x) const
 {
     return !surfaces_[r] || surfaces_[r]->facesNode(x);
 }
 
-Vector2 RigidSurfaceNormals::towardsRigid(int b, int r, int n, const Vector2& x) const
+template <int D>
+typename RigidSurfaceNormals<D>::Vector RigidSurfaceNormals<D>::towardsRigid(int b, int r, int n, const Vector& x) const
 {
-    if (!surfaces_[r]) return MassGradientNormals::towardsRigid(b, r, n, x);
-    return -surfaces_[r]->outwardNormal(x, outward(b, n));
+    if (!surfaces_[r]) return MassGradientNormals<D>::towardsRigid(b, r, n, x);
+    return -surfaces_[r]->outwardNormal(x, this->outward(b, n));
 }
 
-GPIC_REGISTER(ContactNormals<2>, RigidSurfaceNormals, "rigidSurface")
+template class RigidSurfaceNormals<2>;
+#if GPIC_WITH_3D
+template class RigidSurfaceNormals<3>;
+#endif
+
+GPIC_REGISTER_DIMS(ContactNormals, RigidSurfaceNormals, "rigidSurface")
 
 } // namespace gpic

@@ -1,0 +1,86 @@
+#include "normals/RigidSolidSurface.H"
+
+#include "dictionary/Dictionary.H"
+
+#include <cmath>
+#include <limits>
+
+namespace gpic {
+
+#if GPIC_WITH_3D  // TriSurface and RigidPose are built with the 3D engine only
+namespace {
+TriSurface surfaceOf(const Dictionary& d)
+{
+    const std::string type = d.getWord("type", {"box", "triSurface"});
+    if (type == "box") return TriSurface::box(d.get<Space<3>::Vector>("min"), d.get<Space<3>::Vector>("max"), "box");
+    return TriSurface::read(d);
+}
+} // namespace
+
+RigidSolidSurface::RigidSolidSurface(const Dictionary& d) : surface_(surfaceOf(d))
+{
+    const auto [lo, hi] = surface_.bounds();
+    scale_ = (hi - lo).norm();
+    surface_.inside(lo);  // builds the search trees now, not inside the contact pass
+}
+
+void RigidSolidSurface::place(const Particles<3>& p, int body, double reach)
+{
+    pose_ = RigidPose::of(p, body);
+    reach_ = reach;
+}
+
+RigidSolidSurface::Vector RigidSolidSurface::outwardNormal(const Vector& x, const Vector& hint) const
+{
+    const Vector X = pose_.unplace(x), H = pose_.unturn(hint);
+    const double tol = 1e-12 * scale_;
+    const TriSurface::FacetPoint any = surface_.nearest(X);
+    const double toSurface = any.distance;
+    // The nearest facets, and the nearest of those turned to the material (RigidSurface.H).
+    const double facing = -std::sin(10.0 * M_PI / 180.0) * H.norm();
+    Vector anyNormal = Vector::Zero(), normal = Vector::Zero(), foot = any.foot;
+    double dist = std::numeric_limits<double>::max();
+    for (const auto& f : surface_.facetsNear(X, toSurface + reach_)) {
+        const Vector n = surface_.facetNormal(f.facet);
+        if (f.distance <= toSurface + tol) anyNormal += n;
+        if (H.isZero() || !(n.dot(H) < facing)) continue;
+        if (f.distance < dist - tol) {
+            dist = f.distance;
+            foot = f.foot;
+            normal = n;
+        } else if (f.distance <= dist + tol) {
+            normal += n;
+        }
+    }
+    if (normal.isZero()) {  // no hint, or no facet turned to the material: the nearest
+        dist = toSurface;
+        foot = any.foot;
+        normal = anyNormal.isZero() ? surface_.facetNormal(any.facet) : anyNormal;
+    }
+    normal.normalize();
+    // Clear of the body beyond an edge or a corner: the direction from the nearest point,
+    // where the material wraps round it (RigidSurface.H).
+    if (toSurface > tol && !surface_.inside(X)) {
+        const Vector fromFoot = (X - foot) / dist;
+        const bool wraps = H.isZero() || fromFoot.dot(H) < normal.dot(H);
+        if (fromFoot.dot(normal) > 0 && fromFoot.dot(normal) < 1 - 1e-12 && wraps) return pose_.turn(fromFoot);
+    }
+    return pose_.turn(normal);
+}
+
+bool RigidSolidSurface::facesNode(const Vector& x) const
+{
+    const Vector X = pose_.unplace(x);
+    // The inside test last: the nodes of a contact mostly lie on the surface, where the
+    // ray shooting of the inside test is at its slowest (exact arithmetic on degenerate rays).
+    const TriSurface::FacetPoint near = surface_.nearest(X);
+    if (near.distance <= 1e-12 * scale_) return true;
+    // In front of a face: the way to the node from its nearest point is the face's normal
+    // (also where that point lies on an edge between two triangles of one flat face).
+    if ((X - near.foot).dot(surface_.facetNormal(near.facet)) >= (1 - 1e-9) * near.distance) return true;
+    return surface_.inside(X);
+}
+
+#endif
+
+} // namespace gpic

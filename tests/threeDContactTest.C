@@ -1,0 +1,148 @@
+// Multi-field contact in 3D (seed appendix G after Bardenhagen et al. 2000):
+// - the Coulomb law on one node: the approach stopped, the sliding slowed by mu D against
+//   its own direction (any direction across the normal), a slow slide stopped, never
+//   reversed; a separating body left alone;
+// - a block on a fixed rigid plate (rigidSurface normals from the plate's triangles, MUSL)
+//   under gravity tilted along a diagonal of the plate: it slides with
+//   a = g (sin(theta) - mu cos(theta)) along the tilt, within 1 %, and sticks where
+//   mu > tan(theta). (With massGradient normals the block's leading edge catches on the
+//   plate, in the plane as in 3D: doc/contact.md);
+// - two elastic spheres meeting off-centre with friction: the momentum of the pair is kept to
+//   1e-9 (the pair's normals opposite, G.4) and no kinetic energy is made.
+#include "case/CaseInitialiser.H"
+#include "contact/ContactLaw.H"
+#include "dictionary/Dictionary.H"
+#include "run/Simulation.H"
+#include "support/CaseRunner.H"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+using namespace gpic;
+using namespace gpic::test;
+using Vector3 = Space<3>::Vector;
+
+TEST(ThreeDContact, theCoulombLawStopsTheApproachAndSlowsTheSlideAgainstItsDirection)
+{
+    const Dictionary dict = Dictionary::parse("law coulombFriction; mu 0.3;\n", "contactProperties");
+    const auto law = ContactLaw<3>::New(dict, {"a", "b"});
+    const Vector3 n = Vector3(1, 2, 2) / 3.0;  // unit
+    const Vector3 vRef(0.1, -0.2, 0.3);
+    const Vector3 across = Vector3(2, -1, 0).normalized();  // normal to n
+    ASSERT_NEAR(across.dot(n), 0.0, 1e-15);
+    // Approaching at 0.5 and sliding at 2 across n: the approach goes, the slide loses 0.3 x 0.5.
+    const Vector3 v = vRef + 0.5 * n + 2.0 * across;
+    const Vector3 c = law->correct(v, vRef, n, 0, 1);
+    EXPECT_NEAR((c - vRef).dot(n), 0.0, 1e-15);
+    EXPECT_NEAR(((c - vRef) - (2.0 - 0.3 * 0.5) * across).norm(), 0.0, 1e-14);
+    // Sliding at 0.1 < mu D: stopped, not reversed.
+    const Vector3 slow = law->correct(vRef + 0.5 * n + 0.1 * across, vRef, n, 0, 1);
+    EXPECT_NEAR((slow - vRef).norm(), 0.0, 1e-15);
+    // Separating: untouched.
+    const Vector3 away = vRef - 0.5 * n + 2.0 * across;
+    EXPECT_EQ(law->correct(away, vRef, n, 0, 1), away);
+}
+
+namespace {
+
+//- An elastic block (0.1 x 0.1 x 0.06 m) on a fixed steel plate, gravity tilted by theta from
+//  -x3 towards the diagonal (cos 30, sin 30) of the plate; friction mu. The block's velocity
+//  at 0.2 s.
+Vector3 slideVelocity(const fs::path& dir, double thetaDeg, double mu)
+{
+    const double th = thetaDeg * M_PI / 180, phi = M_PI / 6, g = 9.81;
+    std::ostringstream gravity;
+    gravity.precision(17);
+    gravity << "value (" << g * std::sin(th) * std::cos(phi) << " " << g * std::sin(th) * std::sin(phi) << " "
+            << -g * std::cos(th) << ");\n";
+    writeDictionary(dir / "constant/g", gravity.str());
+    writeDictionary(dir / "constant/grid", "origin (0 0 0); cellSize 0.02; nCells (20 16 8);\nboundaries { left { "
+                                           "type slip; } right { type slip; } bottom { type slip; } top { type slip; } "
+                                           "back { type slip; } front { type free; } }\n");
+    writeDictionary(dir / "constant/materials", "rubber { type linearElastic; rho 1000; E 1e6; nu 0.3; }\n"
+                                                "steel { type linearElastic; rho 7800; E 1e6; nu 0.3; }\n");
+    writeDictionary(dir / "constant/bodies",
+                    "plate { material steel; shape { type box; min (0.02 0.02 0.02); max (0.38 0.30 0.06); } "
+                    "particlesPerCell 2; }\n"
+                    "block { material rubber; shape { type box; min (0.06 0.06 0.06); max (0.16 0.16 0.12); } "
+                    "particlesPerCell 2; }\n");
+    writeDictionary(dir / "constant/rigidBodies", "plate { type fixed; }\n");
+    writeDictionary(dir / "constant/contactProperties",
+                    "law coulombFriction; mu " + std::to_string(mu) + "; normals rigidSurface; correctRemapped yes;\n");
+    writeDictionary(dir / "system/controlDict", "startFrom latestTime; startTime 0; stopAt endTime;\nendTime 0.2;\n"
+                                                "deltaT 2e-4; writeControl adjustableRunTime; writeInterval 1;\n");
+    const auto run = runAndKeep<3>(dir);
+    const Particles<3>& p = run->solver().particles();
+    Vector3 momentum = Vector3::Zero();
+    double mass = 0;
+    for (std::size_t q = 0; q < p.size(); ++q)
+        if (p.body[q] == 1) {
+            momentum += p.m[q] * p.v[q];
+            mass += p.m[q];
+        }
+    return momentum / mass;
+}
+
+} // namespace
+
+TEST(ThreeDContact, aBlockSlidesDownATiltedPlateAtTheCoulombRateAndSticksBelowTheFrictionAngle)
+{
+    ScratchDir scratch{"slide3d"};
+    const double g = 9.81, th = 30 * M_PI / 180, t = 0.2;
+    const Vector3 along(std::cos(M_PI / 6), std::sin(M_PI / 6), 0);  // the tilt's direction on the plate
+    const Vector3 slip = slideVelocity(scratch.path() / "slip", 30, 0.2);
+    const double expected = g * (std::sin(th) - 0.2 * std::cos(th)) * t;  // a t, 0.641 m/s
+    std::printf("sliding at %.4f m/s along the tilt after %g s (Coulomb: %.4f)\n", slip.dot(along), t, expected);
+    EXPECT_NEAR(slip.dot(along), expected, 0.01 * expected) << slip.transpose();
+    EXPECT_LT((slip - slip.dot(along) * along).norm(), 0.01 * expected) << "slides along the tilt: " << slip.transpose();
+    const Vector3 stick = slideVelocity(scratch.path() / "stick", 30, 0.7);  // tan 30 = 0.577
+    EXPECT_LT(stick.norm(), 0.02 * expected) << stick.transpose();
+}
+
+TEST(ThreeDContact, twoSpheresMeetingOffCentreWithFrictionKeepTheirMomentumAndGainNoEnergy)
+{
+    // The seed's two disks (4.4: rubber, E 1000 Pa, 0.1 m/s each way) as spheres of 0.2 m on
+    // 0.04 m cells, their centres 0.04 m apart across the plane of approach: an oblique impact
+    // with friction, separated by 3.2 s.
+    ScratchDir scratch{"spheres3d"};
+    const fs::path dir = scratch.path();
+    writeDictionary(dir / "constant/grid", "origin (0 0 0); cellSize 0.04; nCells (25 25 15);\nboundaries { left { "
+                                           "type free; } right { type free; } bottom { type free; } top { type free; } "
+                                           "back { type free; } front { type free; } }\n");
+    writeDictionary(dir / "constant/materials", "rubber { type linearElastic; rho 1000; E 1000; nu 0.3; }\n");
+    writeDictionary(dir / "constant/bodies",
+                    "a { material rubber; shape { type sphere; centre (0.2 0.8 0.28); radius 0.2; } "
+                    "particlesPerCell 2; velocity (0.1 -0.1 0); }\n"
+                    "b { material rubber; shape { type sphere; centre (0.8 0.2 0.32); radius 0.2; } "
+                    "particlesPerCell 2; velocity (-0.1 0.1 0); }\n");
+    writeDictionary(dir / "constant/g", "value (0 0 0);\n");
+    writeDictionary(dir / "constant/contactProperties", "law coulombFriction; mu 0.1; correctRemapped no;\n");
+    writeDictionary(dir / "system/controlDict", "startFrom latestTime; startTime 0; stopAt endTime;\nendTime 3.2;\n"
+                                                "deltaT 1e-3; writeControl adjustableRunTime; writeInterval 4;\n");
+    auto simulation = initialisedSimulation<3>(dir);
+    const auto totals = [&]() {
+        const Particles<3>& p = simulation->solver().particles();
+        std::pair<Vector3, double> t{Vector3::Zero(), 0.0};
+        for (std::size_t q = 0; q < p.size(); ++q) {
+            t.first += p.m[q] * p.v[q];
+            t.second += 0.5 * p.m[q] * p.v[q].squaredNorm();
+        }
+        return t;
+    };
+    const auto [p0, E0] = totals();
+    const double pA = E0 / (0.1 * std::sqrt(2.0));  // one sphere's momentum m v, from E0 = 2 (m v^2 / 2)
+    simulation->run();
+    const auto [p1, E1] = totals();
+    Vector3 pa = Vector3::Zero();
+    const Particles<3>& p = simulation->solver().particles();
+    for (std::size_t q = 0; q < p.size(); ++q)
+        if (p.body[q] == 0) pa += p.m[q] * p.v[q];
+    std::printf("kinetic energy %.4g -> %.4g J after the impact; sphere a's momentum (%.3g %.3g %.3g) of %.3g\n", E0, E1,
+                pa.x(), pa.y(), pa.z(), pA);
+    EXPECT_LT((p1 - p0).norm(), 1e-9 * pA) << p0.transpose() << " -> " << p1.transpose();
+    EXPECT_LT(pa.x(), 0.0) << "sphere a rebounds";
+    EXPECT_LT(E1, E0) << "the impact makes no energy";
+}
