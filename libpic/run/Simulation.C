@@ -288,6 +288,12 @@ void Simulation<D>::indexStart()
 template <int D>
 void Simulation<D>::startParts()
 {
+    // What an earlier run wrote after the start (a killed run's rows past its last time
+    // directory, a torn row) goes before the first row is written.
+    for (auto& f : case_->functions)
+        if (const std::size_t dropped = f->keepRowsUpTo(time_))
+            log() << "Function object " << f->name() << ": " << dropped << " rows after t = " << time_
+                  << " s of an earlier run dropped\n";
     if (case_->stages) case_->stages->start(solver_, time_, step_);  // begins a stage, or carries one on
     for (auto& f : case_->functions) f->start(solver_, time_);
     if (case_->stages) {
