@@ -105,3 +105,8 @@ foreach(study studyDryRun studyBadInput studyBadBytes studyResume studyLocalSlur
 endforeach()
 # Slurm's daemons want the machine's cores: not beside another test that would take them.
 set_tests_properties(studyLocalSlurm PROPERTIES RUN_SERIAL TRUE)
+
+# One writer per case: a second run refused, a stale lock taken over (tests/scripts/caseLock.sh).
+add_test(NAME caseLock
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/scripts/caseLock.sh ${PROJECT_SOURCE_DIR} ${PROJECT_BINARY_DIR})
+set_tests_properties(caseLock PROPERTIES TIMEOUT 300 LABELS integration)

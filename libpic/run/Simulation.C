@@ -1,6 +1,7 @@
 #include "run/Simulation.H"
 
 #include "case/CaseFiles.H"
+#include "core/CaseLock.H"
 #include "core/error.H"
 #include "core/Info.H"
 #include "core/StopSignals.H"
@@ -435,6 +436,7 @@ template class Simulation<3>;
 long runCase(const RunOptions& options)
 {
     const Dictionary grid = readCaseFile(options.caseDir, "constant/grid");
+    const CaseLock lock(options.caseDir, "picSolver");  // one run writes a case at a time
     if (caseDimension(grid) == 3) {
 #if GPIC_WITH_3D
         return Simulation<3>(options).run();
