@@ -11,6 +11,7 @@
 #include "io/ParticlesVtk.H"
 #include "io/PvdCollection.H"
 #include "io/TimeDirectories.H"
+#include "run/WriteBudget.H"
 
 #include <algorithm>
 #include <chrono>
@@ -235,6 +236,9 @@ long Simulation<D>::run()
     auto lastProgress = wallStart;
     const double tStart = time_;
     const long firstStep = step_;
+    checkWriteBudget(*case_->timeControl, case_->controlDict, time_,
+                     case_->timeControl->plainDeltaT(solver_.criticalTimeStep()), options_.caseDir,
+                     case_->context.startTimeName);
     indexStart();
     startParts();
     bool writtenLast = true;
