@@ -110,3 +110,8 @@ set_tests_properties(studyLocalSlurm PROPERTIES RUN_SERIAL TRUE)
 add_test(NAME caseLock
          COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/scripts/caseLock.sh ${PROJECT_SOURCE_DIR} ${PROJECT_BINARY_DIR})
 set_tests_properties(caseLock PROPERTIES TIMEOUT 300 LABELS integration)
+
+# Allocations beyond ulimit -v named with their size (tests/scripts/memoryLimits.sh).
+add_test(NAME memoryLimits
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/scripts/memoryLimits.sh ${PROJECT_SOURCE_DIR} ${PROJECT_BINARY_DIR})
+set_tests_properties(memoryLimits PROPERTIES TIMEOUT 300 LABELS integration)

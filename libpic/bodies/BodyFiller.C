@@ -1,6 +1,7 @@
 #include "bodies/BodyFiller.H"
 
 #include "bodies/Shape.H"
+#include "core/error.H"
 #include "dictionary/Dictionary.H"
 
 #include <cmath>
@@ -140,18 +141,22 @@ FilledBodies<D> fillBodies(const Dictionary& bodiesDict, const Grid<D>& grid,
             for (int d = 0; d < D; ++d) x[d] += (sub[d] + 0.5) * h[d] / n;
             return x;
         };
-        if constexpr (D == 2) {
-            for (int j = 0; j < grid.ny(); ++j)
-                for (int i = 0; i < grid.nx(); ++i)
-                    for (int b = 0; b < n; ++b)
-                        for (int a = 0; a < n; ++a) place(subCentre({i, j}, {a, b}));
-        } else {
-            for (int k = 0; k < grid.cells(2); ++k)
-                for (int j = 0; j < grid.cells(1); ++j)
-                    for (int i = 0; i < grid.cells(0); ++i)
-                        for (int c = 0; c < n; ++c)
-                            for (int b = 0; b < n; ++b)
-                                for (int a = 0; a < n; ++a) place(subCentre({i, j, k}, {a, b, c}));
+        try {
+            if constexpr (D == 2) {
+                for (int j = 0; j < grid.ny(); ++j)
+                    for (int i = 0; i < grid.nx(); ++i)
+                        for (int b = 0; b < n; ++b)
+                            for (int a = 0; a < n; ++a) place(subCentre({i, j}, {a, b}));
+            } else {
+                for (int k = 0; k < grid.cells(2); ++k)
+                    for (int j = 0; j < grid.cells(1); ++j)
+                        for (int i = 0; i < grid.cells(0); ++i)
+                            for (int c = 0; c < n; ++c)
+                                for (int b = 0; b < n; ++b)
+                                    for (int a = 0; a < n; ++a) place(subCentre({i, j, k}, {a, b, c}));
+            }
+        } catch (const RunError& e) {  // the particle arrays beyond the memory: name the body
+            body.fail("particlesPerCell", "body '" + key + "', particlesPerCell " + std::to_string(n) + ": " + e.what());
         }
         if (added == 0) body.fail("shape", "body '" + key + "' holds no particle: enlarge it or "
                                            "raise particlesPerCell");
