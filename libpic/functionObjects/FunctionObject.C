@@ -87,9 +87,12 @@ template <int D> std::size_t FunctionObject<D>::keepRowsUpTo(double time)
         if (startName.empty() || *end != '\0' || !std::isfinite(startTime) || !start.is_directory(ec)) continue;
         // A start at or after `time` holds only later rows: its header lines are kept.
         const double upTo = startTime < time ? time : -std::numeric_limits<double>::infinity();
-        for (const auto& entry : fs::directory_iterator(start.path()))
-            if (entry.is_regular_file(ec) && entry.path().filename().string()[0] != '.')
-                dropped += gpic::keepRowsUpTo(entry.path().string(), upTo);
+        for (const auto& entry : fs::directory_iterator(start.path())) {
+            // Not a temporary (a rewrite cut short by a kill leaves <file>.tmp).
+            const std::string file = entry.path().filename().string();
+            const bool temporary = file[0] == '.' || entry.path().extension() == ".tmp";
+            if (entry.is_regular_file(ec) && !temporary) dropped += gpic::keepRowsUpTo(entry.path().string(), upTo);
+        }
     }
     return dropped;
 }
