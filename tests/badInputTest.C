@@ -422,6 +422,50 @@ TEST_F(BadInput, aBrokenTimeFileIsNamedWithItsLine)
     expectRejected("picSolver", badInput, {"0.2/uniform/time:2:", "'{'"});
 }
 
+// --- A damaged restart: the start directory's name, its particles' time and uniform/time must
+// agree, and a directory picSolver wrote must still hold uniform/ and a checksummed particle file.
+
+TEST_F(BadInput, aRestartFromAnEditedTimeFileIsRefused)
+{
+    startGood();
+    const fs::path time = dir / "0.2/uniform/time";
+    std::string text = readText(time);
+    const std::size_t value = text.find("value");
+    ASSERT_NE(value, std::string::npos) << text;
+    text.replace(value, text.find(';', value) - value, "value   0.25");
+    std::ofstream(time) << text;
+    expectRejected("picSolver", badInput, {"0.2/particles.vtp", "its time 0.2", "0.2/uniform/time's 0.25"});
+}
+
+TEST_F(BadInput, aRestartFromADirectoryNamedForAnotherTimeIsRefused)
+{
+    // 0.2/ renamed 1e308: the latest time by its name, holding the state of t = 0.2 s.
+    startGood();
+    fs::rename(dir / "0.2", dir / "1e308");
+    expectRejected("picSolver", badInput, {"1e308/particles.vtp", "its time 0.2", "directory 1e308"});
+}
+
+TEST_F(BadInput, aRestartWithoutUniformIsAnErrorNotAFreshStart)
+{
+    // Without uniform/ the run would start over (a silo its fill stage) from particles of 0.2 s.
+    startGood();
+    fs::remove_all(dir / "0.2/uniform");
+    expectRejected("picSolver", badInput, {"0.2/uniform/time", "missing"});
+}
+
+TEST_F(BadInput, aRestartFromAParticleFileWithoutItsChecksumIsRefused)
+{
+    // The checksum's field array renamed: the file reads as one written without a checksum.
+    startGood();
+    const fs::path file = dir / "0.2/particles.vtp";
+    std::string bytes = readText(file);
+    const std::size_t at = bytes.find("Name=\"checksum\"");
+    ASSERT_NE(at, std::string::npos);
+    bytes.replace(at, 15, "Name=\"checksun\"");
+    std::ofstream(file, std::ios::binary) << bytes;
+    expectRejected("picSolver", badInput, {"0.2/particles.vtp", "cannot read particles", "no checksum"});
+}
+
 TEST_F(BadInput, theSolverBeforePicInitFindsNoTimeDirectoryWhateverStartFrom)
 {
     // No startGood: the case has no time directory at all.

@@ -98,10 +98,20 @@ set_tests_properties(massScalingAnchor PROPERTIES TIMEOUT 600 LABELS integration
 # Design studies (picStudy, etc/python/picstudy) on a four-case blade study pushed 2 mm:
 # the dry run's case files line by line, bad studyDicts, resuming and a failed case, and
 # local against Slurm (a one-node cluster the test starts: tests/scripts/slurmLocal.sh).
-foreach(study studyDryRun studyBadInput studyResume studyLocalSlurm)
+foreach(study studyDryRun studyBadInput studyBadBytes studyResume studyLocalSlurm)
   add_test(NAME ${study}
            COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/scripts/${study}.sh ${PROJECT_SOURCE_DIR} ${PROJECT_BINARY_DIR})
   set_tests_properties(${study} PROPERTIES TIMEOUT 300 LABELS integration)
 endforeach()
 # Slurm's daemons want the machine's cores: not beside another test that would take them.
 set_tests_properties(studyLocalSlurm PROPERTIES RUN_SERIAL TRUE)
+
+# One writer per case: a second run refused, a stale lock taken over (tests/scripts/caseLock.sh).
+add_test(NAME caseLock
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/scripts/caseLock.sh ${PROJECT_SOURCE_DIR} ${PROJECT_BINARY_DIR})
+set_tests_properties(caseLock PROPERTIES TIMEOUT 300 LABELS integration)
+
+# Allocations beyond ulimit -v named with their size (tests/scripts/memoryLimits.sh).
+add_test(NAME memoryLimits
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/scripts/memoryLimits.sh ${PROJECT_SOURCE_DIR} ${PROJECT_BINARY_DIR})
+set_tests_properties(memoryLimits PROPERTIES TIMEOUT 300 LABELS integration)

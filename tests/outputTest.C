@@ -6,6 +6,7 @@
 #include "io/PvdCollection.H"
 #include "io/TimeDirectories.H"
 #include "io/GridVtkRead.H"
+#include "support/Applications.H"
 #include "support/CaseRunner.H"
 
 #include <vtkDataArray.h>
@@ -123,6 +124,69 @@ TEST(Output, purgeWriteKeepsTheStartAndTheLastN)
     const gpic::PvdCollection pvd((dir / "twoDisks.pvd").string());
     ASSERT_EQ(pvd.entries().size(), 3u);
     EXPECT_EQ(pvd.entries()[1].file, "0.3/particles.vtp");
+}
+
+TEST(Output, purgeWriteHoldsAcrossARestart)
+{
+    // To 0.4 (0, 0.3, 0.4 kept), then restarted to 0.8: the directories of the first run count
+    // as the restart's own, so that the case ends as a straight run's, with the start and the
+    // last two (0.4, the restart's start, goes too).
+    ScratchDir scratch("purgeRestart");
+    const fs::path dir = twoDisks(scratch);
+    setEntry(dir / "system/controlDict", "purgeWrite", "2");
+    runCase(dir);
+    setEntry(dir / "system/controlDict", "endTime", "0.8");
+    const AppResult r = runApplication("picSolver", dir);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    std::vector<std::string> names;
+    for (const auto& [t, name] : gpic::listTimeDirectories(dir.string())) names.push_back(name);
+    EXPECT_EQ(names, (std::vector<std::string>{"0", "0.7", "0.8"}));
+    const gpic::PvdCollection pvd((dir / "twoDisks.pvd").string());
+    ASSERT_EQ(pvd.entries().size(), 3u);
+    EXPECT_EQ(pvd.entries()[1].file, "0.7/particles.vtp");
+}
+
+TEST(Output, aWriteIntervalShorterThanTheStepAndThousandsOfDirectoriesAreWarned)
+{
+    // writeInterval 1e-4 s with steps of 1e-3 s to 1.2 s: every one of 1200 steps written
+    // (purgeWrite 1 keeps the disk use small), both said before the first step.
+    ScratchDir scratch("writeBudget");
+    const fs::path dir = twoDisks(scratch);
+    const fs::path control = dir / "system/controlDict";
+    setEntry(control, "endTime", "1.2");
+    setEntry(control, "writeControl", "runTime");
+    setEntry(control, "writeInterval", "1e-4");
+    setEntry(control, "purgeWrite", "1");
+    ASSERT_EQ(runApplication("picInit", dir).exitCode, 0);
+    const AppResult r = runApplication("picSolver", dir);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    ASSERT_EQ(r.warningLines.size(), 2u) << r.err;
+    EXPECT_NE(r.warningLines[0].find("writeInterval 0.0001 s is shorter than the time step 0.001 s: every step is "
+                                     "written"), std::string::npos) << r.warningLines[0];
+    EXPECT_NE(r.warningLines[1].find("the run would write about 1200 time directories"), std::string::npos)
+        << r.warningLines[1];
+    EXPECT_NE(r.warningLines[1].find("of which purgeWrite keeps 1"), std::string::npos) << r.warningLines[1];
+    for (const auto& w : r.warningLines) EXPECT_NE(w.find("system/controlDict:"), std::string::npos) << w;
+    EXPECT_EQ(gpic::listTimeDirectories(dir.string()).size(), 2u);
+}
+
+TEST(Output, aRunWhoseDirectoriesWouldNotFitOnTheDiskIsRefused)
+{
+    // adjustableRunTime with writeInterval 1e-12 s: every step cut to 1e-12 s and written,
+    // 4e11 directories of some 100 KiB each, far more than any disk: refused before the first step.
+    ScratchDir scratch("writeBudgetFull");
+    const fs::path dir = twoDisks(scratch);
+    const fs::path control = dir / "system/controlDict";
+    setEntry(control, "writeControl", "adjustableRunTime");
+    setEntry(control, "writeInterval", "1e-12");
+    ASSERT_EQ(runApplication("picInit", dir).exitCode, 0);
+    const AppResult r = runApplication("picSolver", dir);
+    EXPECT_EQ(r.exitCode, 1) << r.err;
+    ASSERT_EQ(r.errorLines.size(), 1u) << r.err;
+    for (const char* m : {"system/controlDict:", "would write about 400000000000 time directories", "free on",
+                          "raise writeInterval or set purgeWrite"})
+        EXPECT_NE(r.errorLines[0].find(m), std::string::npos) << m << " not in " << r.errorLines[0];
+    EXPECT_EQ(gpic::listTimeDirectories(dir.string()).size(), 1u);
 }
 
 TEST(Output, picListTimesRemovesAllButTheStartAndTrimsTheIndex)

@@ -157,6 +157,16 @@ std::vector<std::string> dataLines(const fs::path& file)
     return rows;
 }
 
+//- The '#' lines of a function object's file.
+std::vector<std::string> headerLines(const fs::path& file)
+{
+    std::vector<std::string> rows;
+    std::ifstream in(file);
+    for (std::string line; std::getline(in, line);)
+        if (!line.empty() && line[0] == '#') rows.push_back(line);
+    return rows;
+}
+
 //- A 20 x 20 mm elastic block falling through the outflow bottom of a 40 x 40 mm grid along
 //  the side of a fixed post (frictional contact; its first row leaves at 0.021 s), to
 //  t = 0.06 s in 600 steps, written every 300 steps; massFlow, bodyMotion, forces, toolWear
@@ -289,6 +299,9 @@ TEST_F(Restart, dashTimeRestartsFromThatTimeDirectory)
     fs::copy_file(dir / "1/particles.vtp", kept);
     const std::string at05 = readText(dir / "0.5/particles.vtp");
     const auto mtime05 = fs::last_write_time(dir / "0.5/particles.vtp");
+    // The rerun cuts the first run's rows back to 0.5: the straight rows are kept aside.
+    const fs::path straightMotion = scratch.path() / "straightMotion.dat";
+    fs::copy_file(dir / "postProcessing/motion/0/bodyMotion.dat", straightMotion);
 
     setEntry(dir / "system/controlDict", "endTime", "1");
     const AppResult r = run("picSolver", dir, "-time 0.5");
@@ -296,6 +309,66 @@ TEST_F(Restart, dashTimeRestartsFromThatTimeDirectory)
     expectSameParticles(kept, dir / "1/particles.vtp");
     EXPECT_EQ(readText(dir / "0.5/particles.vtp"), at05) << "the start directory is only read";
     EXPECT_TRUE(fs::last_write_time(dir / "0.5/particles.vtp") == mtime05);
-    expectSameMotion(dir / "postProcessing/motion/0/bodyMotion.dat",
-                     dir / "postProcessing/motion/0.5/bodyMotion.dat", 0.5, 1.0);
+    expectSameMotion(straightMotion, dir / "postProcessing/motion/0.5/bodyMotion.dat", 0.5, 1.0);
+    EXPECT_LE(readColumns(dir / "postProcessing/motion/0/bodyMotion.dat").at("time").back(), 0.5);
+}
+
+TEST_F(Restart, aRestartAfterAKillDropsTheRowsPastItsStartAndATornRow)
+{
+    // What a run killed (SIGKILL, a power cut) after writing 0.03 leaves: the time directories
+    // up to 0.03, and rows past 0.03 in every file, the last one cut mid-line. Made here without
+    // a race: the first run goes on to 0.06, then 0.06/ goes and every file gets a torn row
+    // ("0.02 1", no newline: it reads as a time before the restart). The restart from 0.03
+    // must drop all of that, so that the two parts' rows are the straight run's, character for
+    // character, with each file's header lines once.
+    const fs::path straight = scratch.path() / "straight", split = scratch.path() / "split";
+    fallingBlockWithEveryFunction(straight);
+    fallingBlockWithEveryFunction(split);
+    runStraight(straight);
+    runStraight(split);
+    fs::remove_all(split / "0.06");
+    const std::vector<std::pair<std::string, std::string>> files{
+        {"silo", "massFlow.dat"}, {"motion", "bodyMotion.dat"}, {"post", "forces.dat"},
+        {"wear", "wear.dat"},     {"wear", "wearProfile.dat"},  {"fill", "fill.dat"}};
+    for (const auto& [fn, file] : files) {
+        const fs::path f = split / "postProcessing" / fn / "0" / file;
+        ASSERT_GT(dataLines(f).size(), dataLines(straight / "postProcessing" / fn / "0" / file).size() / 2 + 1)
+            << "rows past 0.03 to drop in " << f;
+        std::ofstream(f, std::ios::app) << "0.02 1";
+    }
+    const AppResult r = run("picSolver", split);
+    EXPECT_NE(r.out.find("starting at t = 0.03 (0.03)"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("rows after t = 0.03 s of an earlier run dropped"), std::string::npos) << r.out;
+    for (const auto& [fn, file] : files) {
+        SCOPED_TRACE(fn + "/" + file);
+        const fs::path first = split / "postProcessing" / fn / "0" / file;
+        const fs::path second = split / "postProcessing" / fn / "0.03" / file;
+        const fs::path whole = straight / "postProcessing" / fn / "0" / file;
+        EXPECT_EQ(headerLines(first), headerLines(whole));
+        EXPECT_EQ(headerLines(second), headerLines(whole));
+        auto parts = dataLines(first);
+        const auto later = dataLines(second);
+        ASSERT_FALSE(later.empty());
+        parts.insert(parts.end(), later.begin(), later.end());
+        EXPECT_EQ(parts, dataLines(whole));
+    }
+}
+
+TEST_F(Restart, aRerunFromAnEarlierTimeLeavesNoRowOfALaterStart)
+{
+    // Split at 1 and run to 2, then rerun from 0.5 with -time: the rows the first restart
+    // wrote (postProcessing/motion/1/) are all after 0.5 and go, header kept, as do those of
+    // the first part past 0.5; the rerun's rows carry on from 0.5 as the straight run's.
+    const fs::path straight = prepare("straight"), split = prepare("split");
+    runStraight(straight);
+    runSplit(split);
+    run("picSolver", split, "-time 0.5");
+    const fs::path later = split / "postProcessing/motion/1/bodyMotion.dat";
+    EXPECT_TRUE(dataLines(later).empty()) << "rows left after 0.5 in " << later;
+    EXPECT_EQ(headerLines(later), headerLines(straight / "postProcessing/motion/0/bodyMotion.dat"));
+    const auto first = readColumns(split / "postProcessing/motion/0/bodyMotion.dat");
+    ASSERT_FALSE(first.at("time").empty());
+    EXPECT_LE(first.at("time").back(), 0.5);
+    expectSameMotion(straight / "postProcessing/motion/0/bodyMotion.dat",
+                     split / "postProcessing/motion/0.5/bodyMotion.dat", 0.5, 2.0);
 }

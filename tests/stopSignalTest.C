@@ -156,3 +156,50 @@ TEST(StopSignal, aKilledRunKeepsTheFunctionObjectRowsOfItsLastWrittenState)
     // Every row up to there is whole: all its columns.
     for (const auto& [name, values] : rows) EXPECT_GE(values.size(), upToNewest) << name;
 }
+
+TEST(StopSignal, aKilledRunRestartedWritesTheRowsOfTheStraightRun)
+{
+    // bodyMotion every 10 steps: a row per 1e-4 s, so that the killed run has pushed rows past
+    // its newest time directory out of its file buffer, the last most likely cut mid-line. The
+    // restart from the newest state drops them: the first run's rows up to there and the
+    // restart's rows are the straight run's, character for character.
+    ScratchDir scratch{"killedRestarted"};
+    const fs::path dir = scratch.path() / "twoDisks";
+    const pid_t pid = runningTwoDisks(dir);
+    ASSERT_GT(pid, 0);
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));  // well into the next 0.1 s
+    ASSERT_EQ(kill(pid, SIGKILL), 0);
+    waitFor(pid, 60);
+
+    const auto times = gpic::listTimeDirectories(dir.string());
+    const std::string newest = times.back().second;
+    const std::string endTime = std::to_string(times.back().first + 0.02);
+    setEntry(dir / "system/controlDict", "endTime", endTime);
+    const AppResult restart = runApplication("picSolver", dir);
+    ASSERT_EQ(restart.exitCode, 0) << restart.err;
+
+    const fs::path straight = scratch.path() / "straight";
+    copyCase(tutorialPath("verification/twoDisks"), straight);
+    setEntry(straight / "system/controlDict", "deltaT", "1e-5");
+    setEntry(straight / "system/controlDict", "endTime", endTime);
+    ASSERT_EQ(runApplication("picInit", straight).exitCode, 0);
+    ASSERT_EQ(runApplication("picSolver", straight).exitCode, 0);
+
+    const auto lines = [](const fs::path& file) {
+        std::vector<std::string> all;
+        std::ifstream in(file);
+        for (std::string line; std::getline(in, line);) all.push_back(line);
+        return all;
+    };
+    const auto whole = lines(straight / "postProcessing/motion/0/bodyMotion.dat");
+    auto parts = lines(dir / "postProcessing/motion/0/bodyMotion.dat");
+    ASSERT_GT(parts.size(), 1000u);
+    const auto second = lines(dir / "postProcessing/motion" / newest / "bodyMotion.dat");
+    ASSERT_GT(second.size(), 100u);
+    ASSERT_EQ(second[0][0], '#');
+    std::size_t header = 0;
+    while (header < second.size() && second[header][0] == '#') ++header;
+    parts.insert(parts.end(), second.begin() + static_cast<long>(header), second.end());
+    ASSERT_EQ(parts.size(), whole.size());
+    for (std::size_t k = 0; k < whole.size(); ++k) ASSERT_EQ(parts[k], whole[k]) << "line " << k;
+}

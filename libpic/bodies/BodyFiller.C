@@ -1,8 +1,10 @@
 #include "bodies/BodyFiller.H"
 
 #include "bodies/Shape.H"
+#include "core/error.H"
 #include "dictionary/Dictionary.H"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -72,6 +74,95 @@ private:
     double K0_ = 0, surface_ = 0, rhoG_ = 0;
 };
 
+
+//- The cells of the grid, per axis, that a box [lo, hi] can hold particles in: one cell of
+//  margin each side (bounds() rounding), clamped to the grid. Empty where it misses the grid.
+template <int D>
+std::array<std::pair<int, int>, D> cellRange(const Grid<D>& grid, const typename Space<D>::Vector& lo,
+                                             const typename Space<D>::Vector& hi)
+{
+    std::array<std::pair<int, int>, D> range;
+    for (int a = 0; a < D; ++a) {
+        const double h = grid.cellSize()[a];
+        const double first = std::floor((lo[a] - grid.origin()[a]) / h) - 1;
+        const double last = std::floor((hi[a] - grid.origin()[a]) / h) + 1;
+        const double top = grid.cells(a) - 1;
+        range[a] = {static_cast<int>(std::clamp(first, 0.0, top + 1)), static_cast<int>(std::clamp(last, -1.0, top))};
+    }
+    return range;
+}
+
+//- The bodies filled so far, by where their shapes' boxes lie: about as many buckets as there
+//  are bodies, over the grid, so that a body is checked for overlaps against its neighbours
+//  only, not against every earlier body (which made picInit quadratic in the bodies).
+template <int D> class ShapeBuckets {
+public:
+    using Vector = typename Space<D>::Vector;
+    ShapeBuckets(const Grid<D>& grid, std::size_t bodies) : origin_(grid.origin())
+    {
+        const double perAxis = std::ceil(std::pow(4.0 * static_cast<double>(std::max<std::size_t>(bodies, 1)), 1.0 / D));
+        std::size_t total = 1;
+        for (int a = 0; a < D; ++a) {
+            n_[a] = static_cast<int>(std::min<double>(perAxis, grid.cells(a)));
+            size_[a] = (grid.upper()[a] - grid.origin()[a]) / n_[a];
+            total *= static_cast<std::size_t>(n_[a]);
+        }
+        buckets_.resize(total);
+    }
+    //- Body `id`, of shape box [lo, hi].
+    void add(int id, const Vector& lo, const Vector& hi)
+    {
+        std::array<int, D> from, to;
+        for (int a = 0; a < D; ++a) {
+            from[a] = bucket(lo[a], a);
+            to[a] = bucket(hi[a], a);
+        }
+        std::array<int, D> k = from;
+        while (true) {
+            buckets_[flat(k)].push_back(id);
+            int a = 0;
+            while (a < D && ++k[a] > to[a]) k[a] = from[a], ++a;
+            if (a == D) return;
+        }
+    }
+    //- The bodies whose boxes share a bucket with one of `points`, in id order.
+    template <class Points> std::vector<int> near(const Points& points, std::size_t first) const
+    {
+        std::vector<int> ids;
+        std::vector<std::size_t> seen;
+        for (std::size_t q = first; q < points.size(); ++q) {
+            std::array<int, D> k;
+            for (int a = 0; a < D; ++a) k[a] = bucket(points[q][a], a);
+            const std::size_t b = flat(k);
+            if (!seen.empty() && seen.back() == b) continue;  // neighbours share buckets
+            seen.push_back(b);
+        }
+        std::sort(seen.begin(), seen.end());
+        seen.erase(std::unique(seen.begin(), seen.end()), seen.end());
+        for (const std::size_t b : seen) ids.insert(ids.end(), buckets_[b].begin(), buckets_[b].end());
+        std::sort(ids.begin(), ids.end());
+        ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+        return ids;
+    }
+
+private:
+    Vector origin_, size_;
+    std::array<int, D> n_{};
+    std::vector<std::vector<int>> buckets_;
+
+    int bucket(double x, int a) const
+    {
+        const double k = std::floor((x - origin_[a]) / size_[a]);
+        return static_cast<int>(std::clamp(k, 0.0, static_cast<double>(n_[a] - 1)));
+    }
+    std::size_t flat(const std::array<int, D>& k) const
+    {
+        std::size_t i = 0;
+        for (int a = D - 1; a >= 0; --a) i = i * static_cast<std::size_t>(n_[a]) + static_cast<std::size_t>(k[a]);
+        return i;
+    }
+};
+
 } // namespace
 
 template <int D>
@@ -84,7 +175,9 @@ FilledBodies<D> fillBodies(const Dictionary& bodiesDict, const Grid<D>& grid,
     FilledBodies<D> out;
     std::vector<std::unique_ptr<Shape<D>>> shapes;  //- of the bodies filled so far
     bodiesDict.refuseRepeats("body");  // merged, one body would be silently lost
-    for (const auto& key : bodiesDict.keys()) {
+    const std::vector<std::string> keys = bodiesDict.keys();
+    ShapeBuckets<D> placed(grid, keys.size());
+    for (const auto& key : keys) {
         if (!bodiesDict.isDict(key)) bodiesDict.fail(key, "'" + key + "' is not a body sub-dictionary");
         const Dictionary& body = bodiesDict.subDict(key);
         const int bodyId = static_cast<int>(out.bodyNames.size());
@@ -140,24 +233,32 @@ FilledBodies<D> fillBodies(const Dictionary& bodiesDict, const Grid<D>& grid,
             for (int d = 0; d < D; ++d) x[d] += (sub[d] + 0.5) * h[d] / n;
             return x;
         };
-        if constexpr (D == 2) {
-            for (int j = 0; j < grid.ny(); ++j)
-                for (int i = 0; i < grid.nx(); ++i)
-                    for (int b = 0; b < n; ++b)
-                        for (int a = 0; a < n; ++a) place(subCentre({i, j}, {a, b}));
-        } else {
-            for (int k = 0; k < grid.cells(2); ++k)
-                for (int j = 0; j < grid.cells(1); ++j)
-                    for (int i = 0; i < grid.cells(0); ++i)
-                        for (int c = 0; c < n; ++c)
-                            for (int b = 0; b < n; ++b)
-                                for (int a = 0; a < n; ++a) place(subCentre({i, j, k}, {a, b, c}));
+        // Only the cells of the shape's box: the others hold none of its particles, and a scan
+        // of the whole grid per body made picInit quadratic in the bodies.
+        const auto cells = cellRange(grid, lo, hi);
+        try {
+            if constexpr (D == 2) {
+                for (int j = cells[1].first; j <= cells[1].second; ++j)
+                    for (int i = cells[0].first; i <= cells[0].second; ++i)
+                        for (int b = 0; b < n; ++b)
+                            for (int a = 0; a < n; ++a) place(subCentre({i, j}, {a, b}));
+            } else {
+                for (int k = cells[2].first; k <= cells[2].second; ++k)
+                    for (int j = cells[1].first; j <= cells[1].second; ++j)
+                        for (int i = cells[0].first; i <= cells[0].second; ++i)
+                            for (int c = 0; c < n; ++c)
+                                for (int b = 0; b < n; ++b)
+                                    for (int a = 0; a < n; ++a) place(subCentre({i, j, k}, {a, b, c}));
+            }
+        } catch (const RunError& e) {  // the particle arrays beyond the memory: name the body
+            body.fail("particlesPerCell", "body '" + key + "', particlesPerCell " + std::to_string(n) + ": " + e.what());
         }
         if (added == 0) body.fail("shape", "body '" + key + "' holds no particle: enlarge it or "
                                            "raise particlesPerCell");
         // Two bodies in the same place would put twice the mass there and start interpenetrated.
         const std::size_t first = out.particles.size() - added;
-        for (std::size_t other = 0; other < shapes.size(); ++other) {
+        for (const int near : placed.near(out.particles.x, first)) {
+            const auto other = static_cast<std::size_t>(near);
             std::size_t inside = 0, example = 0;
             for (std::size_t q = first; q < out.particles.size(); ++q)
                 if (shapes[other]->inside(out.particles.x[q]) && inside++ == 0) example = q;
@@ -168,6 +269,7 @@ FilledBodies<D> fillBodies(const Dictionary& bodiesDict, const Grid<D>& grid,
                 << out.particles.x[example].transpose() << ")); bodies may touch but not share space";
             body.fail("shape", msg.str());
         }
+        placed.add(bodyId, lo, hi);
         shapes.push_back(std::move(shape));
     }
     if (out.bodyNames.empty()) bodiesDict.fail("", "constant/bodies defines no body");

@@ -2,6 +2,7 @@
 
 #include "bodies/BodyFiller.H"
 #include "case/CaseFiles.H"
+#include "core/CaseLock.H"
 #include "core/error.H"
 #include "core/Plugins.H"
 #include "io/ParticlesVtk.H"
@@ -69,6 +70,7 @@ InitialiseSummary initialise(const std::string& dir, bool overwrite, const Dicti
 InitialiseSummary initialiseCase(const std::string& dir, bool overwrite)
 {
     const Dictionary control = readCaseFile(dir, "system/controlDict");
+    const CaseLock lock(dir, "picInit");  // never beside a run of the case
     Plugins::open(control, "libs");
     Dictionary gridDict = readCaseFile(dir, "constant/grid");
     if (caseDimension(gridDict) == 3) {

@@ -4,10 +4,13 @@
 #include "core/Info.H"
 #include "core/Plugins.H"
 #include "core/error.H"
+#include "dictionary/ExactNumber.H"
 #include "io/ParticlesVtk.H"
 #include "io/TimeDirectories.H"
 #include "planar/CosseratRotation.H"
 
+#include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <sstream>
 
@@ -52,6 +55,44 @@ std::string startTimeName(const std::string& dir, const RunOptions& options, con
 }
 
 bool hasFile(const std::string& dir, const char* relativePath) { return fs::exists(fs::path(dir) / relativePath); }
+
+//- Could `name` be the directory name picSolver or picInit gives time t (timeName at some
+//  number of digits), or does it read back as t?
+bool namesTime(const std::string& name, double t)
+{
+    for (int digits = 1; digits <= 17; ++digits)
+        if (timeName(t, digits) == name) return true;
+    char* end = nullptr;
+    const double named = std::strtod(name.c_str(), &end);
+    return *end == '\0' && std::abs(named - t) <= 1e-12 * std::abs(t);
+}
+
+//- The start directory's three records of its time agree: the directory name, the particle
+//  file's TimeValue (`particleTime`) and uniform/time (`stored`), which every directory but
+//  picInit's holds. A state from another time or case, a renamed directory or an edited or
+//  lost uniform/ is refused rather than continued from.
+void checkStartTime(const std::string& dir, const std::string& startName, double particleTime,
+                    const std::optional<StoredTime>& stored)
+{
+    const fs::path start = fs::path(dir) / startName;
+    const std::string particles = (start / "particles.vtp").string();
+    if (!stored) {
+        // picInit writes the first time directory of a case, without uniform/; picSolver writes
+        // uniform/ into every one: a later directory without it has lost it.
+        const auto times = listTimeDirectories(dir);
+        if (!times.empty() && times.front().second != startName)
+            throw InputError((start / "uniform/time").string(), 0,
+                             "missing: every time directory picSolver writes has it (the run's time, step and "
+                             "state); restart from another time directory, or from the start");
+    } else if (stored->value != particleTime) {
+        throw InputError(particles, 0, "its time " + exactNumber(particleTime) + " s differs from " + startName +
+                                           "/uniform/time's " + exactNumber(stored->value) +
+                                           " s: one of them is from another time or case");
+    }
+    if (!namesTime(startName, particleTime))
+        throw InputError(particles, 0, "its time " + exactNumber(particleTime) + " s is not that of its directory " +
+                                           startName + ": a renamed or copied time directory");
+}
 } // namespace
 
 template <int D> void Case<D>::warnUnused() const
@@ -123,9 +164,11 @@ template <int D> std::unique_ptr<Case<D>> readCase(const RunOptions& options)
 
     std::vector<std::string> storedMaterials, bodyNames;
     readParticles((fs::path(dir) / startName / "particles.vtp").string(), in.particles, c.time, &storedMaterials,
-                  &bodyNames);
+                  &bodyNames, true);
     remapMaterials(in.particles, storedMaterials, materials, startName + "/particles.vtp");
-    if (const auto stored = readStoredTime(dir, startName)) {
+    const auto stored = readStoredTime(dir, startName);
+    checkStartTime(dir, startName, c.time, stored);
+    if (stored) {
         c.time = stored->value;
         c.step = stored->index;
         in.removedMass = stored->removedMass;

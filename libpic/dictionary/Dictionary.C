@@ -51,6 +51,7 @@ Dictionary::Dictionary(const Dictionary& other)
     // it is a deep copy owned by, and linked to, the copy.
     entries_.reserve(other.entries_.size());
     for (const Entry& e : other.entries_) entries_.push_back(DictionaryParser::cloneEntry(e));
+    index_ = other.index_;
     DictionaryParser::relink(*this);
 }
 
@@ -63,7 +64,7 @@ Dictionary& Dictionary::operator=(const Dictionary& other)
 Dictionary::Dictionary(Dictionary&& other) noexcept
     : name_(std::move(other.name_)), file_(std::move(other.file_)),
       startLine_(other.startLine_), endLine_(other.endLine_), parent_(other.parent_),
-      entries_(std::move(other.entries_)), repeated_(std::move(other.repeated_)),
+      entries_(std::move(other.entries_)), index_(std::move(other.index_)), repeated_(std::move(other.repeated_)),
       realPaths_(std::move(other.realPaths_))
 {
     for (Entry& e : entries_)
@@ -86,6 +87,7 @@ Dictionary& Dictionary::operator=(Dictionary&& other) noexcept
     startLine_ = other.startLine_;
     endLine_ = other.endLine_;
     entries_ = std::move(other.entries_);
+    index_ = std::move(other.index_);
     repeated_ = std::move(other.repeated_);
     realPaths_ = std::move(other.realPaths_);
     DictionaryParser::relink(*this);

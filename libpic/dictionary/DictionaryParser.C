@@ -6,6 +6,7 @@
 #include <cctype>
 #include <cstdlib>
 #include <filesystem>
+#include <unordered_map>
 
 namespace gpic {
 
@@ -96,7 +97,8 @@ void DictionaryParser::parseEntries(Dictionary& dict, Stream& in, const Token* o
     // Values written in this block, by keyword and line: a second one is legal (the later
     // wins, as in OpenFOAM) but more often a mistake than an intent, so it is said. A later
     // value over one from an #include or a $macro is the usual way to override and is not.
-    std::vector<std::pair<std::string, int>> written, writtenDicts;
+    // keyword -> the lines it was given at, hashed: a file of tens of thousands of bodies.
+    std::unordered_map<std::string, std::vector<int>> written, writtenDicts;
     while (!in.atEnd()) {
         const Token& t = in.next();
         if (t.kind == Token::Kind::punctuation) {
@@ -117,22 +119,22 @@ void DictionaryParser::parseEntries(Dictionary& dict, Stream& in, const Token* o
         else {
             const bool isValue = in.atEnd() || !isPunct(in.peek().token, '{');
             if (isValue) {
-                for (const auto& [keyword, line] : written)
-                    if (keyword == t.text)
-                        warning(t.file, t.line,
-                                "keyword '" + t.text + "' is given twice in dictionary " + dict.name_ +
-                                    " (first at line " + std::to_string(line) + "): the later value is used");
-                written.emplace_back(t.text, t.line);
+                std::vector<int>& lines = written[t.text];
+                for (const int line : lines)
+                    warning(t.file, t.line,
+                            "keyword '" + t.text + "' is given twice in dictionary " + dict.name_ +
+                                " (first at line " + std::to_string(line) + "): the later value is used");
+                lines.push_back(t.line);
             } else {
-                for (const auto& [keyword, line] : writtenDicts)
-                    if (keyword == t.text) {
-                        warning(t.file, t.line,
-                                "sub-dictionary '" + t.text + "' is given twice in dictionary " + dict.name_ +
-                                    " (first at line " + std::to_string(line) +
-                                    "): the two are merged, the later entries win");
-                        dict.repeated_.push_back({t.text, line, t.line});
-                    }
-                writtenDicts.emplace_back(t.text, t.line);
+                std::vector<int>& lines = writtenDicts[t.text];
+                for (const int line : lines) {
+                    warning(t.file, t.line,
+                            "sub-dictionary '" + t.text + "' is given twice in dictionary " + dict.name_ +
+                                " (first at line " + std::to_string(line) +
+                                "): the two are merged, the later entries win");
+                    dict.repeated_.push_back({t.text, line, t.line});
+                }
+                lines.push_back(t.line);
             }
             parseEntry(dict, t, in, Mode::merge);
         }

@@ -19,8 +19,8 @@ void DictionaryParser::addEntry(Dictionary& dict, Entry entry, Mode mode)
         entry.dict->name_ = dict.name_ + "/" + entry.keyword;
         relink(*entry.dict);
     }
-    for (Entry& old : dict.entries_) {
-        if (old.keyword != entry.keyword) continue;
+    if (const auto at = dict.index_.find(entry.keyword); at != dict.index_.end()) {
+        Entry& old = dict.entries_[at->second];
         if (mode == Mode::merge && old.dict && entry.dict) {
             for (Entry& e : entry.dict->entries_) addEntry(*old.dict, std::move(e), mode);
         } else {
@@ -28,6 +28,7 @@ void DictionaryParser::addEntry(Dictionary& dict, Entry entry, Mode mode)
         }
         return;
     }
+    dict.index_.emplace(entry.keyword, dict.entries_.size());
     dict.entries_.push_back(std::move(entry));
 }
 
@@ -51,9 +52,8 @@ void DictionaryParser::relink(Dictionary& dict)
 
 const Entry* DictionaryParser::entryIn(const Dictionary& dict, const std::string& keyword)
 {
-    for (const Entry& e : dict.entries_)
-        if (e.keyword == keyword) return &e;
-    return nullptr;
+    const auto at = dict.index_.find(keyword);
+    return at == dict.index_.end() ? nullptr : &dict.entries_[at->second];
 }
 
 namespace {

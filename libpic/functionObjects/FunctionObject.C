@@ -2,11 +2,14 @@
 
 #include "core/error.H"
 #include "dictionary/Dictionary.H"
+#include "io/DataRows.H"
 
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
+#include <cstdlib>
 #include <filesystem>
+#include <limits>
 
 namespace gpic {
 
@@ -68,6 +71,30 @@ template <int D> void FunctionObject<D>::flushFiles()
             throw RunError("cannot write " + (directory() / fileName).string() + ": " +
                            (errno ? std::strerror(errno) : "the stream failed"));
     }
+}
+
+template <int D> std::size_t FunctionObject<D>::keepRowsUpTo(double time)
+{
+    namespace fs = std::filesystem;
+    const fs::path root = fs::path(context_.caseDir) / "postProcessing" / name_;
+    std::error_code ec;
+    if (!fs::is_directory(root, ec)) return 0;
+    std::size_t dropped = 0;
+    for (const auto& start : fs::directory_iterator(root)) {
+        const std::string startName = start.path().filename().string();
+        char* end = nullptr;
+        const double startTime = std::strtod(startName.c_str(), &end);
+        if (startName.empty() || *end != '\0' || !std::isfinite(startTime) || !start.is_directory(ec)) continue;
+        // A start at or after `time` holds only later rows: its header lines are kept.
+        const double upTo = startTime < time ? time : -std::numeric_limits<double>::infinity();
+        for (const auto& entry : fs::directory_iterator(start.path())) {
+            // Not a temporary (a rewrite cut short by a kill leaves <file>.tmp).
+            const std::string file = entry.path().filename().string();
+            const bool temporary = file[0] == '.' || entry.path().extension() == ".tmp";
+            if (entry.is_regular_file(ec) && !temporary) dropped += gpic::keepRowsUpTo(entry.path().string(), upTo);
+        }
+    }
+    return dropped;
 }
 
 template <int D>

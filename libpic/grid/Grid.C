@@ -1,6 +1,8 @@
 #include "grid/Grid.H"
 
 #include "core/Threads.H"
+#include "core/ByteSize.H"
+#include "core/error.H"
 #include "dictionary/Dictionary.H"
 
 #include <unistd.h>
@@ -9,6 +11,7 @@
 #include <cmath>
 #include <iomanip>
 #include <limits>
+#include <new>
 #include <sstream>
 
 namespace gpic {
@@ -84,7 +87,11 @@ template <int D> Grid<D>::Grid(const Dictionary& dict)
             << "r >= 0, but the grid starts at r = " << origin_.x() << "; start it on the axis (origin (0 ...)) or beyond";
         dict.fail("origin", msg.str());
     }
-    allocate();
+    try {
+        allocate();
+    } catch (const RunError& e) {
+        dict.fail("nCells", std::string("nCells: ") + e.what());
+    }
 }
 
 template <int D>
@@ -100,14 +107,24 @@ template <int D> void Grid<D>::allocate()
     nNodes_ = static_cast<int>(count);
     for (int a = 0; a < D; ++a) upper_[a] = origin_[a] + n_[a] * h_[a];
     const auto n = static_cast<std::size_t>(nNodes_);
-    mass.assign(n, 0.0);
-    momentum.assign(n, Vector::Zero());
-    velocity.assign(n, Vector::Zero());
-    fInt.assign(n, Vector::Zero());
-    fExt.assign(n, Vector::Zero());
-    accel.assign(n, Vector::Zero());
-    isActive_.assign(n, NodeMark::idle);
-    active.reserve(n);
+    try {
+        mass.assign(n, 0.0);
+        momentum.assign(n, Vector::Zero());
+        velocity.assign(n, Vector::Zero());
+        fInt.assign(n, Vector::Zero());
+        fExt.assign(n, Vector::Zero());
+        accel.assign(n, Vector::Zero());
+        isActive_.assign(n, NodeMark::idle);
+        active.reserve(n);
+    } catch (const std::bad_alloc&) {
+        // Beyond what this process may have (ulimit -v, a batch system's limit, other runs):
+        // the machine's memory was checked already (checkMemory).
+        const double need = double(n) * (sizeof(double) + 5 * sizeof(Vector) + sizeof(NodeMark) + sizeof(int));
+        std::ostringstream msg;
+        msg << "out of memory: the grid's node arrays (" << n << " nodes) need " << byteSize(need)
+            << ", more than this process may have (ulimit -v)";
+        throw RunError(msg.str());
+    }
 }
 
 template <int D> void Grid<D>::resetFields()

@@ -191,7 +191,8 @@ private:
 
 template <int D>
 void readParticles(const std::string& path, Particles<D>& p, double& time,
-                   std::vector<std::string>* materialNames, std::vector<std::string>* bodyNames)
+                   std::vector<std::string>* materialNames, std::vector<std::string>* bodyNames,
+                   bool requireChecksum)
 {
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec)) cannotReadParticles(path, "no such file");
@@ -232,6 +233,9 @@ void readParticles(const std::string& path, Particles<D>& p, double& time,
     };
     // Files written before the checksum have none; those with one must match it.
     const std::vector<std::string> sum = strings("checksum");
+    if (sum.empty() && requireChecksum)
+        cannotReadParticles(path, "it has no checksum (the field array 'checksum' picInit and picSolver write): "
+                                  "a run starts only from a state it can check");
     detail::ParticleChecksum checksum;
     detail::ParticleChecksum* const check = sum.empty() ? nullptr : &checksum;
 
@@ -275,10 +279,10 @@ void readParticles(const std::string& path, Particles<D>& p, double& time,
 }
 
 template void readParticles(const std::string&, Particles<2>&, double&, std::vector<std::string>*,
-                            std::vector<std::string>*);
+                            std::vector<std::string>*, bool);
 #if GPIC_WITH_3D
 template void readParticles(const std::string&, Particles<3>&, double&, std::vector<std::string>*,
-                            std::vector<std::string>*);
+                            std::vector<std::string>*, bool);
 #endif
 
 } // namespace gpic

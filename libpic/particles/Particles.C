@@ -2,8 +2,13 @@
 
 #include "particles/ParticleFields.H"
 
+#include "core/ByteSize.H"
+#include "core/error.H"
+
 #include <algorithm>
+#include <new>
 #include <numeric>
+#include <sstream>
 #include <stdexcept>
 #include <type_traits>
 #include <variant>
@@ -42,8 +47,20 @@ template <int D, class Op> void forCarried(const Particles<D>& p, Op op)
 
 template <int D> void Particles<D>::resize(std::size_t n)
 {
-    forCarried(*this, [n](auto* a) { resizeZero(*a, n); });
-    for (auto& h : history_) h.resize(n, 0.0);
+    try {
+        forCarried(*this, [n](auto* a) { resizeZero(*a, n); });
+        for (auto& h : history_) h.resize(n, 0.0);
+    } catch (const std::bad_alloc&) {
+        // What the arrays of n particles take, in one line instead of a bare bad_alloc.
+        double each = static_cast<double>(history_.size() * sizeof(double));
+        forCarried(*this, [&each](const auto* a) {
+            each += sizeof(typename std::decay_t<decltype(*a)>::value_type);
+        });
+        std::ostringstream msg;
+        msg << "out of memory: the particle arrays of " << n << " particles need " << byteSize(each * static_cast<double>(n))
+            << ", more than this process may have (ulimit -v)";
+        throw RunError(msg.str());
+    }
 }
 
 template <int D> void Particles<D>::carry(FieldGroup g)

@@ -1,6 +1,7 @@
 #include "run/Simulation.H"
 
 #include "case/CaseFiles.H"
+#include "core/CaseLock.H"
 #include "core/error.H"
 #include "core/Info.H"
 #include "core/StopSignals.H"
@@ -10,6 +11,7 @@
 #include "io/ParticlesVtk.H"
 #include "io/PvdCollection.H"
 #include "io/TimeDirectories.H"
+#include "run/WriteBudget.H"
 
 #include <algorithm>
 #include <chrono>
@@ -237,6 +239,9 @@ long Simulation<D>::run()
     auto lastProgress = wallStart;
     const double tStart = time_;
     const long firstStep = step_;
+    checkWriteBudget(*case_->timeControl, case_->controlDict, time_,
+                     case_->timeControl->plainDeltaT(solver_.criticalTimeStep()), options_.caseDir,
+                     case_->context.startTimeName);
     indexStart();
     startParts();
     bool writtenLast = true;
@@ -292,6 +297,12 @@ void Simulation<D>::indexStart()
 template <int D>
 void Simulation<D>::startParts()
 {
+    // What an earlier run wrote after the start (a killed run's rows past its last time
+    // directory, a torn row) goes before the first row is written.
+    for (auto& f : case_->functions)
+        if (const std::size_t dropped = f->keepRowsUpTo(time_))
+            log() << "Function object " << f->name() << ": " << dropped << " rows after t = " << time_
+                  << " s of an earlier run dropped\n";
     if (case_->stages) case_->stages->start(solver_, time_, step_);  // begins a stage, or carries one on
     for (auto& f : case_->functions) f->start(solver_, time_);
     if (case_->stages) {
@@ -433,6 +444,7 @@ template class Simulation<3>;
 long runCase(const RunOptions& options)
 {
     const Dictionary grid = readCaseFile(options.caseDir, "constant/grid");
+    const CaseLock lock(options.caseDir, "picSolver");  // one run writes a case at a time
     if (caseDimension(grid) == 3) {
 #if GPIC_WITH_3D
         return Simulation<3>(options).run();

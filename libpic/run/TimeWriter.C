@@ -21,6 +21,17 @@ TimeWriter::TimeWriter(std::string caseDir, const OnDisk& start, int timePrecisi
     : caseDir_(std::move(caseDir)), startName_(start.name), digits_(timePrecision), withGrid_(withGrid),
       purgeWrite_(purgeWrite), controlDict_(controlDict), onDisk_(start)
 {
+    // A restart: the directories the earlier runs wrote up to the start (all but the case's
+    // first, picInit's) count as written, so that purgeWrite keeps the last N across restarts
+    // as in a straight run.
+    if (purgeWrite_ <= 0) return;
+    const auto times = listTimeDirectories(caseDir_);
+    if (times.empty() || times.front().second == startName_) return;
+    for (std::size_t k = 1; k < times.size(); ++k) {
+        earlier_.push_back(times[k]);
+        if (times[k].second == startName_) return;
+    }
+    earlier_.clear();  // the start is not among them
 }
 
 std::string TimeWriter::nameFor(double t)
@@ -85,12 +96,14 @@ void TimeWriter::written(double t, long step, const std::string& name)
     onDisk_ = {t, step, name};
     PvdCollection pvd(pvdPath(caseDir_));
     index(pvd, t, name);
-    // purgeWrite: like OpenFOAM, only directories this run wrote are removed, never the start.
+    // purgeWrite: the oldest beyond N of those this run and the runs before it up to its
+    // start wrote; never the case's first directory, never one after the start.
     written_.push_back({t, name});
-    while (purgeWrite_ > 0 && static_cast<int>(written_.size()) > purgeWrite_) {
-        pvd.removeTime(written_.front().first);
-        removeTimeDirectory(caseDir_, written_.front().second);
-        written_.pop_front();
+    while (purgeWrite_ > 0 && static_cast<int>(earlier_.size() + written_.size()) > purgeWrite_) {
+        auto& oldest = earlier_.empty() ? written_ : earlier_;
+        pvd.removeTime(oldest.front().first);
+        removeTimeDirectory(caseDir_, oldest.front().second);
+        oldest.pop_front();
     }
     pvd.write();
 }

@@ -80,7 +80,7 @@ double TimeControl::deltaT(double t, double dtCritical, double landOn) const
 {
     double dt;
     if (adjustTimeStep_) {
-        dt = std::min(maxCourant_ * dtCritical, maxDeltaT_);
+        dt = plainDeltaT(dtCritical);
     } else {
         if (deltaT_ > dtCritical)
             throw RunError("at time " + format(t) + " the fixed deltaT " + format(deltaT_) +

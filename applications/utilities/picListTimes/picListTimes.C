@@ -5,9 +5,11 @@
 #include "io/PvdCollection.H"
 #include "io/TimeDirectories.H"
 #include "case/CaseFiles.H"
+#include "core/CaseLock.H"
 
 #include <filesystem>
 #include <iostream>
+#include <optional>
 
 namespace {
 
@@ -55,6 +57,12 @@ int main(int argc, char** argv)
         [](const po::variables_map& vm) {
             const std::string dir = vm["case"].as<std::string>();
             if (vm.count("rebuild") && vm.count("rm")) throw gpic::RunError("-rm and -rebuild: give one of them");
+            // Removing or reindexing the times of a running case would pull them from under it.
+            std::optional<gpic::CaseLock> lock;
+            if (vm.count("rebuild") || vm.count("rm")) {
+                gpic::listTimeDirectories(dir);  // a missing case is said as such first
+                lock.emplace(dir, vm.count("rm") ? "picListTimes -rm" : "picListTimes -rebuild");
+            }
             if (vm.count("rebuild")) {
                 rebuildIndex(dir);
                 return;

@@ -40,7 +40,7 @@ def make_cases(study, output=None):
             for name, point in zip(study.case_names(points), points)]
 
 
-def _is_output(name):
+def is_output(name):
     """What a run of the base case leaves: time directories, logs, postProcessing, studies."""
     try:
         float(name)
@@ -55,8 +55,7 @@ def rewritten(study, case):
     """{file: (base text, case text)} of the files the case changes."""
     out = {}
     for file, changes in case.changes.items():
-        with open(os.path.join(study.base, file)) as f:
-            text = f.read()
+        text = foamdict.read_text(os.path.join(study.base, file), file)
         out[file] = (text, foamdict.replace_values(text, file, changes))
     return out
 
@@ -70,7 +69,7 @@ def write_case(study, case):
     skip = os.path.realpath(os.path.dirname(case.directory))
     for name in sorted(os.listdir(study.base)):
         source = os.path.join(study.base, name)
-        if _is_output(name) or os.path.realpath(source) == skip:
+        if is_output(name) or os.path.realpath(source) == skip:
             continue
         if os.path.isdir(source):
             shutil.copytree(source, os.path.join(building, name), symlinks=True,
@@ -78,7 +77,7 @@ def write_case(study, case):
         else:
             shutil.copy2(source, os.path.join(building, name))
     for file, (_, text) in rewritten(study, case).items():
-        with open(os.path.join(building, file), 'w') as f:
+        with open(os.path.join(building, file), 'w', encoding='utf-8') as f:
             f.write(text)
     with open(os.path.join(building, RUN_FILE), 'w') as f:
         json.dump({'run': study.run, 'entries': case.changes}, f, indent=1)

@@ -16,12 +16,17 @@ Exit status: 0 every case run has finished, 1 bad input, 2 a case failed, 128 + 
 by signal n.
 """
 import argparse
+import collections
 import os
 import sys
 
 from . import cases as casefiles
 from . import executors, report, results, studydict
 from .errors import InputError
+
+# A design of more cases than this is warned: each case is a copy of the base case, written
+# before any runs.
+LARGE_DESIGN = 10000
 
 
 class Parser(argparse.ArgumentParser):
@@ -68,6 +73,42 @@ def describe(study, case, quiet):
         sys.stdout.write(casefiles.diff(study, case))
 
 
+def base_case_bytes(base):
+    """The bytes of the base case's files that each case copies (not its output)."""
+    total = 0
+    for name in os.listdir(base):
+        if casefiles.is_output(name):
+            continue
+        path = os.path.join(base, name)
+        if os.path.isdir(path):
+            for root, _, files in os.walk(path):
+                total += sum(os.path.getsize(os.path.join(root, f)) for f in files)
+        elif os.path.isfile(path):
+            total += os.path.getsize(path)
+    return total
+
+
+def size_text(n):
+    for unit in ('B', 'KiB', 'MiB', 'GiB', 'TiB'):
+        if n < 1024 or unit == 'TiB':
+            return '%.3g %s' % (n, unit)
+        n /= 1024.0
+
+
+class Progress:
+    """A line every twentieth of `total` (at least every 100) where there are 200 or more,
+    so that a long stretch of writing (some 10 ms a case) is seen going."""
+
+    def __init__(self, what, total):
+        self.what, self.total, self.done = what, total, 0
+        self.every = max(100, total // 20) if total >= 200 else 0
+
+    def step(self):
+        self.done += 1
+        if self.every and (self.done % self.every == 0 or self.done == self.total):
+            print('%s: %d of %d' % (self.what, self.done, self.total), flush=True)
+
+
 def summary(rows):
     counts = {}
     for row in rows:
@@ -96,9 +137,15 @@ def study_main(args):
     if args.parallel:
         study.local['parallel'] = args.parallel
     directory = casefiles.study_directory(study, args.output)
+    count = len(study.points())
+    if count > LARGE_DESIGN:   # said before the cases are made: that alone takes a while
+        each = base_case_bytes(study.base)
+        print('Warning: %s: the design makes %d cases (more than %d), each a copy of the base case of about '
+              '%s: %s in all; -maxCases N runs them N at a time'
+              % (study.dict_label, count, LARGE_DESIGN, size_text(each), size_text(each * count)),
+              file=sys.stderr, flush=True)
     all_cases = casefiles.make_cases(study, args.output)
-    names = [c.name for c in all_cases]
-    duplicate = sorted({n for n in names if names.count(n) > 1})
+    duplicate = sorted(n for n, k in collections.Counter(c.name for c in all_cases).items() if k > 1)
     if duplicate:
         raise InputError(study.dict_label, 0, 'two cases would share the directory %s: give values that differ'
                          % duplicate[0])
@@ -119,9 +166,12 @@ def study_main(args):
     elif not args.collect:
         if args.maxCases is not None:
             pending = pending[:args.maxCases]
+        writing = {id(c) for c in pending}
+        progress = Progress('Writing cases', len(pending))
         for case in all_cases:
-            if case in pending:
+            if id(case) in writing:
                 casefiles.write_case(study, case)
+                progress.step()
             elif not args.dryRun:
                 continue
             describe(study, case, args.quiet)

@@ -215,9 +215,27 @@ def parse(text, path):
     return top
 
 
+def read_text(path, label=None):
+    """The text of a case file, UTF-8 (a leading byte-order mark dropped). A byte that is not
+    UTF-8 (a Latin-1 comment) or a NUL (a binary file) is an InputError at its line, not a
+    traceback."""
+    label = label or path
+    with open(path, 'rb') as f:
+        data = f.read()
+    nul = data.find(b'\0')
+    if nul >= 0:
+        raise InputError(label, data.count(b'\n', 0, nul) + 1,
+                         'a NUL byte: not a text file (a binary file in place of the dictionary?)')
+    try:
+        return data.decode('utf-8-sig')
+    except UnicodeDecodeError as e:
+        raise InputError(label, data.count(b'\n', 0, e.start) + 1,
+                         'byte 0x%02x is not UTF-8 text (a Latin-1 or Windows character?): save the file as UTF-8'
+                         % data[e.start]) from None
+
+
 def read(path, label=None):
-    with open(path) as f:
-        return parse(f.read(), label or path)
+    return parse(read_text(path, label), label or path)
 
 
 def _parse_entries(tokens, k, into, path, closing):
