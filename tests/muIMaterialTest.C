@@ -21,7 +21,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <iostream>
 #include <memory>
 #include <string>
 #include <vector>
@@ -90,6 +92,7 @@ template <int D> typename Space<D>::SymTensor isotropic(double sigma)
 template <int D> void shearAtSetRates()
 {
     const double p0 = 1e3, dt = 1e-6;
+    double worst = 0;
     for (double I : {0.01, 0.1, 0.278, 1.0, 2.0}) {
         const double gammaDot = I / (d * std::sqrt(rhoS / p0));
         SCOPED_TRACE("I = " + std::to_string(I));
@@ -110,7 +113,9 @@ template <int D> void shearAtSetRates()
         EXPECT_EQ(point.history("yieldState"), code(YieldState::shear));
         EXPECT_NEAR(point.history("I"), I, 1e-9 * I);
         EXPECT_NEAR(point.history("gammaDotP"), gammaDot, 1e-9 * gammaDot);
+        worst = std::max(worst, std::abs(tau / p - rheology.mu(I)) / rheology.mu(I));
     }
+    std::cout << "D = " << D << ": worst relative error of tau/p against mu(I): " << worst << "\n";
 }
 
 //- Dilate from p0 until the density is below rhoC, then compress back by as much: the stress
@@ -163,8 +168,12 @@ template <int D> void dilateAndRecompress()
     SymTensor expected = SymTensor::Zero();
     muI.elastic().addElasticIncrement(expected, taken);
     const auto& s = point.p.sigma[0];
-    for (int c = 0; c < Space<D>::nSym; ++c)
+    double worst = 0;
+    for (int c = 0; c < Space<D>::nSym; ++c) {
         EXPECT_NEAR(s[c], expected[c], 1e-9 * std::abs(expected[XX])) << "component " << c;
+        worst = std::max(worst, std::abs(s[c] - expected[c]) / std::abs(expected[XX]));
+    }
+    std::cout << "D = " << D << ": re-formed at p = " << -meanStress(s) << " Pa, error " << worst << "\n";
     EXPECT_GT(-meanStress(s), 0.0);
     EXPECT_LE(shearStress(s), muS * -meanStress(s));
 }
