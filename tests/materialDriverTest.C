@@ -365,8 +365,9 @@ TEST_F(MaterialDriver, theHoopStrainOfAnAxisymmetricRingLoadsEveryModelThroughIt
            "elastic { type linearElastic; rho 2000; E 1e7; nu 0.3; }\n"
            "metal   { type vonMises; rho 2000; E 1e7; nu 0.3; sigmaY 1e9; }\n"
            "corn    { type druckerPrager; rho 2000; E 1e7; nu 0.3; qPhi 0.4; kPhi 1e9; qPsi 0; }\n"
-           "sand    { type mohrCoulomb; rho 2000; E 1e7; nu 0.3; phi 30; c 1e9; }\n";
-    for (const char* material : {"elastic", "metal", "corn", "sand"}) {
+           "sand    { type mohrCoulomb; rho 2000; E 1e7; nu 0.3; phi 30; c 1e9; }\n"
+           "beads   { type muI; rho 2000; E 1e7; nu 0.3; muS 1; mu2 2; I0 0.3; d 1e-3; rhoS 2600; rhoC 1900; }\n";
+    for (const char* material : {"elastic", "metal", "corn", "sand", "beads"}) {
         SCOPED_TRACE(material);
         writeDict("hoop { path general; eps33 -0.001; steps 10; }\n", std::string("material ") + material + ";\n");
         run();
