@@ -274,6 +274,26 @@ TEST_F(MaterialDriver, badInputIsOneLineNamingTheKeyword)
     EXPECT_FALSE(fs::exists(dir / "postProcessing/picMaterialTest/a.csv"));
 }
 
+TEST_F(MaterialDriver, aGeneralPathWithBackGoesOutOverHalfTheStepsAndReturns)
+{
+    // Linear elastic, eps11 out to 0.01 and sigma22 driven to -10 kPa over 50 steps, then
+    // both back to their start over 50: at the turn eps11 = 0.01 and sigma22 = -10 kPa; at
+    // the end the strain and every stress are zero again (to rounding). Odd steps cannot turn.
+    writeDict("loop { path general; eps11 0.01; sigma22 -1e4; back yes; steps 100; }\n");
+    run();
+    Table t = result("loop");
+    ASSERT_EQ(t["step"].size(), 101u);
+    EXPECT_NEAR(t["eps11"][50], 0.01, 1e-15);
+    EXPECT_NEAR(t["sigma22"][50], -1e4, 1e-10 * 1e4 + 1e-6);
+    // sigma22 held: eps22 = (sigma22 - alpha2 eps11) / alpha1 at the turn.
+    EXPECT_NEAR(t["eps22"][50], (-1e4 - alpha2 * 0.01) / alpha1, 1e-9);
+    EXPECT_NEAR(t["eps11"].back(), 0.0, 1e-15);
+    for (const char* c : {"sigma11", "sigma22", "sigma33", "sigma12"})
+        EXPECT_NEAR(t[c].back(), 0.0, 1e-6 * alpha1 * 0.01) << c;
+    writeDict("loop { path general; eps11 0.01; back yes; steps 99; }\n");
+    expectRejected({":5:", "'steps'", "even", "back"});
+}
+
 TEST_F(MaterialDriver, aStressThatCannotBeHeldStopsTheRunWithExitStatus2)
 {
     // Von Mises, sigmaY = 100 kPa, no hardening: in pure shear the point yields at
@@ -345,8 +365,9 @@ TEST_F(MaterialDriver, theHoopStrainOfAnAxisymmetricRingLoadsEveryModelThroughIt
            "elastic { type linearElastic; rho 2000; E 1e7; nu 0.3; }\n"
            "metal   { type vonMises; rho 2000; E 1e7; nu 0.3; sigmaY 1e9; }\n"
            "corn    { type druckerPrager; rho 2000; E 1e7; nu 0.3; qPhi 0.4; kPhi 1e9; qPsi 0; }\n"
-           "sand    { type mohrCoulomb; rho 2000; E 1e7; nu 0.3; phi 30; c 1e9; }\n";
-    for (const char* material : {"elastic", "metal", "corn", "sand"}) {
+           "sand    { type mohrCoulomb; rho 2000; E 1e7; nu 0.3; phi 30; c 1e9; }\n"
+           "beads   { type muI; rho 2000; E 1e7; nu 0.3; muS 1; mu2 2; I0 0.3; d 1e-3; rhoS 2600; rhoC 1900; }\n";
+    for (const char* material : {"elastic", "metal", "corn", "sand", "beads"}) {
         SCOPED_TRACE(material);
         writeDict("hoop { path general; eps33 -0.001; steps 10; }\n", std::string("material ") + material + ";\n");
         run();

@@ -111,6 +111,12 @@ template <int D> void LoadPath<D>::readGeneral(const Dictionary& dict)
     if (D == 2 && dict.found("eps33")) strain_[ZZ] = readStrain(dict, "eps33");
     if (dict.found("angle"))
         omega_ = spinOfRotation(readFinite(dict, "angle", "angle in degrees (anticlockwise)"));
+    // There and back: a point loaded and unloaded along the same path in one test keeps its
+    // state between the two (a material that separates and re-forms, a hysteresis loop).
+    back_ = dict.getOrDefault<bool>("back", false);
+    if (back_ && steps_ % 2 != 0)
+        dict.fail("steps", "keyword 'steps' in test " + dict.name() + ": value " + std::to_string(steps_) +
+                               " is not valid; requires an even number with 'back yes' (half out, half back)");
 }
 
 template <int D> typename Space<D>::SymTensor LoadPath<D>::defaultStartStress() const
@@ -131,12 +137,17 @@ template <int D> bool LoadPath<D>::hasStressControl() const
 template <int D> StepControl<D> LoadPath<D>::step(int n, const SymTensor& startStress) const
 {
     StepControl<D> control;
-    control.dEps = strain_ / steps_;
-    if constexpr (D == 2) control.dOmega = omega_ / steps_;
-    else control.dOmega = typename Space<D>::Spin(omega_ / steps_, 0.0, 0.0);  // w12: about e3
+    // Out over all steps, or with `back` out over the first half and back over the second.
+    const int out = back_ ? steps_ / 2 : steps_;
+    const bool returning = n > out;
+    control.dEps = strain_ / out;
+    if (returning) control.dEps = -control.dEps;
+    const double dOmega12 = returning ? -(omega_ / out) : omega_ / out;
+    if constexpr (D == 2) control.dOmega = dOmega12;
+    else control.dOmega = typename Space<D>::Spin(dOmega12, 0.0, 0.0);  // w12: about e3
     control.stressControlled = stressControlled_;
     control.eps33FollowsEps11 = D == 3 && type_ == "biaxial";
-    const double fraction = static_cast<double>(n) / steps_;
+    const double fraction = static_cast<double>(returning ? steps_ - n : n) / out;
     for (int c = 0; c < Controlled<D>::n; ++c) {
         if (!stressControlled_[c]) continue;
         const int k = Controlled<D>::component()[c];
