@@ -93,14 +93,6 @@ Scene plateOnCube()
     return s;
 }
 
-std::string readFile(const fs::path& file)
-{
-    std::ifstream in(file, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
 //- The message of the InputError that picInit (then the solver's reader) throws for `dir`.
 std::string refusal(const fs::path& dir)
 {
@@ -221,11 +213,8 @@ TEST(ThreeDCase, aRestartedRunEndsWithTheStraightRunsParticleFileByteForByte)
     setEntry(split / "system/controlDict", "endTime", "0.025");
     runAndKeep<3>(split);
     setEntry(split / "system/controlDict", "endTime", "0.05");
-    RunOptions options;
-    options.caseDir = split.string();
-    options.quiet = true;
-    Simulation<3>(options).run();
-    const std::string a = readFile(straight / "0.05/particles.vtp"), b = readFile(split / "0.05/particles.vtp");
+    continueRun<3>(split);
+    const std::string a = fileBytes(straight / "0.05/particles.vtp"), b = fileBytes(split / "0.05/particles.vtp");
     ASSERT_FALSE(a.empty());
     EXPECT_TRUE(a == b) << "the restarted run's particles differ from the straight run's";
 

@@ -19,6 +19,17 @@ def read_columns(path):
     return columns
 
 
+def driver_wall_times(log_path):
+    """Wall time [s] by test from picMaterialTest's summary lines."""
+    times = {}
+    with open(log_path) as f:
+        for line in f:
+            m = re.match(r'(\w+) \(.*, wall (\S+) s$', line.strip())
+            if m:
+                times[m.group(1)] = float(m.group(2))
+    return times
+
+
 def run_summary(log_path):
     """(particles, steps, wall seconds) from the 'End:' line of a picSolver log."""
     with open(log_path) as f:

@@ -78,30 +78,7 @@ template void writeGrid(const std::string&, const Grid<3>&, double);
 
 vtkSmartPointer<vtkImageData> readGridImage(const std::string& path, const std::string& hint)
 {
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec))
-        throw InputError(path, 0, "cannot read grid: no such file" + (hint.empty() ? "" : " (" + hint + ")"));
-    vtkNew<vtkXMLImageDataReader> reader;
-    vtkNew<detail::ErrorCollector> errors;
-    reader->AddObserver(vtkCommand::ErrorEvent, errors);
-    reader->SetFileName(path.c_str());
-    {
-        detail::QuietVtk quiet;
-        if (!reader->CanReadFile(path.c_str()))
-            throw InputError(path, 0, "cannot read grid: not a VTK XML ImageData file");
-        try {
-            reader->Update();  // a corrupt block header can ask for an absurd allocation
-        } catch (const std::exception& e) {
-            throw InputError(path, 0,
-                             std::string("cannot read grid: corrupt data (") + e.what() + ")");
-        }
-    }
-    vtkSmartPointer<vtkImageData> image = reader->GetOutput();
-    if (errors->failed || !image)
-        throw InputError(path, 0,
-                         "cannot read grid: " +
-                             (errors->first.empty() ? "VTK returned no data" : errors->first));
-    return image;
+    return detail::readXml<vtkXMLImageDataReader>(path, "grid", "ImageData", hint);
 }
 
 GridVtkInfo readGridInfo(const std::string& path)

@@ -48,21 +48,7 @@ void writeSurface(const std::string& path, const std::vector<Space<3>::Vector>& 
 
 SurfaceVtkInfo readSurface(const std::string& path)
 {
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path, 0, "cannot read surface: no such file");
-    vtkNew<vtkXMLPolyDataReader> reader;
-    vtkNew<detail::ErrorCollector> errors;
-    reader->AddObserver(vtkCommand::ErrorEvent, errors);
-    reader->SetFileName(path.c_str());
-    {
-        detail::QuietVtk quiet;
-        if (!reader->CanReadFile(path.c_str()))
-            throw InputError(path, 0, "cannot read surface: not a VTK XML PolyData file");
-        reader->Update();
-    }
-    vtkPolyData* surface = reader->GetOutput();
-    if (errors->failed || !surface)
-        throw InputError(path, 0, "cannot read surface: " + (errors->first.empty() ? "VTK returned no data" : errors->first));
+    const vtkSmartPointer<vtkPolyData> surface = detail::readXml<vtkXMLPolyDataReader>(path, "surface", "PolyData");
     SurfaceVtkInfo info;
     for (vtkIdType i = 0; i < surface->GetNumberOfPoints(); ++i) {
         double p[3];

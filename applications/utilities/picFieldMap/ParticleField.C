@@ -46,20 +46,8 @@ int componentIndex(const std::string& name, int n, const std::string& path, cons
 
 ParticleField readParticleField(const std::string& vtpPath, const std::string& field)
 {
-    if (!std::filesystem::exists(vtpPath)) throw InputError(vtpPath, 0, "cannot read particles: no such file");
-    vtkNew<vtkXMLPolyDataReader> reader;
-    vtkNew<detail::ErrorCollector> errors;
-    reader->AddObserver(vtkCommand::ErrorEvent, errors);
-    reader->SetFileName(vtpPath.c_str());
-    {
-        detail::QuietVtk quiet;
-        if (!reader->CanReadFile(vtpPath.c_str()))
-            throw InputError(vtpPath, 0, "cannot read particles: not a VTK XML PolyData file");
-        reader->Update();
-    }
-    vtkPolyData* data = reader->GetOutput();
-    if (errors->failed || !data || !data->GetPoints())
-        throw InputError(vtpPath, 0, "cannot read particles: " + (errors->failed ? errors->first : "no points"));
+    const vtkSmartPointer<vtkPolyData> data = detail::readXml<vtkXMLPolyDataReader>(vtpPath, "particles", "PolyData");
+    if (!data->GetPoints()) throw InputError(vtpPath, 0, "cannot read particles: no points");
 
     const auto colon = field.find(':');
     const std::string arrayName = field.substr(0, colon);

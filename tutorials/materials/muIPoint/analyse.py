@@ -23,6 +23,9 @@ import os
 import re
 import sys
 
+sys.path.insert(0, os.path.join(os.environ.get('GPIC_DIR', '../../..'), 'etc', 'python'))
+from gpicdat import driver_wall_times  # noqa: E402
+
 MU_S, MU_2, I_0, D, RHO_S = 0.3819, 0.6435, 0.278, 0.5e-3, 2450.0
 RHO, RHO_C, E, NU = 1500.0, 1485.0, 1e7, 0.3
 K, G = E / (3 * (1 - 2 * NU)), E / (2 * (1 + NU))
@@ -36,16 +39,6 @@ def mu(I):
 
 def keyword(text, key):
     return re.search(r'^\s*' + key + r'\s+([^;\s]+)\s*;', text, re.M).group(1)
-
-
-def wall_times(log_path):
-    times = {}
-    with open(log_path) as f:
-        for line in f:
-            m = re.match(r'(\w+) \(.*, wall (\S+) s$', line.strip())
-            if m:
-                times[m.group(1)] = float(m.group(2))
-    return times
 
 
 def rows(case, test):
@@ -98,7 +91,7 @@ def separation(case, steps):
 case = sys.argv[1]
 dictionary = open(os.path.join(case, 'system', 'materialTestDict')).read()
 steps, dt = int(keyword(dictionary, 'steps')), float(keyword(dictionary, 'deltaT'))
-walls = wall_times(os.path.join(case, 'log.picMaterialTest'))
+walls = driver_wall_times(os.path.join(case, 'log.picMaterialTest'))
 points = {}
 for test in GAMMA:
     rate, state, error, point = shear(case, test, steps, dt)

@@ -14,8 +14,10 @@ MPa) of both tests to series.dat in the case.
 import csv
 import math
 import os
-import re
 import sys
+
+sys.path.insert(0, os.path.join(os.environ.get('GPIC_DIR', '../../..'), 'etc', 'python'))
+from gpicdat import driver_wall_times  # noqa: E402
 
 # Seed Table 4.4.
 K, G, C, PHI = 200e6, 200e6, 1e6, 10.0
@@ -40,17 +42,6 @@ def exact_sigma22(eps22, psi):
     return -(a1 * e_y + slope * (e - e_y))
 
 
-def wall_times(log_path):
-    """Wall time [s] by test from the driver's summary lines."""
-    times = {}
-    with open(log_path) as f:
-        for line in f:
-            m = re.match(r'(\w+) \(.*, wall (\S+) s$', line.strip())
-            if m:
-                times[m.group(1)] = float(m.group(2))
-    return times
-
-
 def read_csv(path):
     with open(path) as f:
         rows = list(csv.DictReader(f))
@@ -58,7 +49,7 @@ def read_csv(path):
 
 
 case = sys.argv[1]
-walls = wall_times(os.path.join(case, 'log.picMaterialTest'))
+walls = driver_wall_times(os.path.join(case, 'log.picMaterialTest'))
 series = {}
 for test, psi in PSI.items():
     eps, sigma = read_csv(os.path.join(case, 'postProcessing', 'picMaterialTest', test + '.csv'))
