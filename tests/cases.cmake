@@ -61,10 +61,11 @@ foreach(tutorial "verification/elasticBar;bar.png;error.png"
                  "geotechnics/silo;flowRate.png;flowPattern-0.2.png;error.png"
                  "geotechnics/columnCollapse;deposit.png"
                  "geotechnics/cylinderCollapse;deposit.png"
+                 "verification/stlVolumes;error.png"
                  "studies/bladeDepthFriction;force.png;error.png"
                  "studies/bucketGeometry;studies/bucketGeometry/plots/carried-toothLength.png;studies/bucketGeometry/plots/toothWear-toothAngle.png")
   list(GET tutorial 0 path)
-  if(NOT GPIC_WITH_3D AND path STREQUAL "geotechnics/cylinderCollapse")
+  if(NOT GPIC_WITH_3D AND (path STREQUAL "geotechnics/cylinderCollapse" OR path STREQUAL "verification/stlVolumes"))
     continue()  # a 3D case: a plane build refuses it
   endif()
   list(SUBLIST tutorial 1 -1 plots)
