@@ -7,7 +7,17 @@ namespace gpic {
 
 template <int D>
 MassGradientNormals<D>::MassGradientNormals(const Dictionary&, const ContactScene& scene) : nBodies_(scene.nBodies())
-{}
+{
+    if constexpr (D == 3)
+        for (std::size_t s = 0; s < mirror_.size() && s < scene.mirror.size(); ++s) mirror_[s] = scene.mirror[s];
+}
+
+template <int D> int MassGradientNormals<D>::folded(int a, int c) const
+{
+    if (c < 0) return mirror_[2 * a] ? -1 - c : -1;
+    if (c >= n_[a]) return mirror_[2 * a + 1] ? 2 * n_[a] - 1 - c : -1;
+    return c;
+}
 
 template <int D> std::size_t MassGradientNormals<D>::cellCount() const
 {
@@ -72,8 +82,9 @@ void MassGradientNormals<D>::place(const Grid<D>& grid, const Particles<D>& p, c
             for (int c = 0; c < 2; ++c)
                 for (int b = 0; b < 2; ++b)
                     for (int a = 0; a < 2; ++a) {
-                        const int i = c0[0] + a, j = c0[1] + b, k = c0[2] + c;
-                        if (i < 0 || j < 0 || k < 0 || i >= n_[0] || j >= n_[1] || k >= n_[2]) continue;
+                        // A weight beyond a mirror side is the mirror particle's in the cell before it.
+                        const int i = folded(0, c0[0] + a), j = folded(1, c0[1] + b), k = folded(2, c0[2] + c);
+                        if (i < 0 || j < 0 || k < 0) continue;
                         const double S1 = (a ? f[0] : 1.0 - f[0]) * (b ? f[1] : 1.0 - f[1]) * (c ? f[2] : 1.0 - f[2]);
                         rho[i + n_[0] * (j + n_[1] * k)] += m[q] * S1;
                     }
@@ -104,8 +115,8 @@ template <int D> typename MassGradientNormals<D>::Vector MassGradientNormals<D>:
         for (int c = -1; c <= 0; ++c)
             for (int b = -1; b <= 0; ++b)
                 for (int a = -1; a <= 0; ++a) {
-                    const int ci = i + a, cj = j + b, ck = k + c;
-                    if (ci < 0 || cj < 0 || ck < 0 || ci >= n_[0] || cj >= n_[1] || ck >= n_[2]) continue;
+                    const int ci = folded(0, i + a), cj = folded(1, j + b), ck = folded(2, k + c);
+                    if (ci < 0 || cj < 0 || ck < 0) continue;
                     const double r = rho[ci + n_[0] * (cj + n_[1] * ck)];
                     g += r * Vector(a < 0 ? face[0] : -face[0], b < 0 ? face[1] : -face[1], c < 0 ? face[2] : -face[2]);
                 }

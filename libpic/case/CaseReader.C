@@ -219,6 +219,7 @@ template <int D> std::unique_ptr<Case<D>> readCase(const RunOptions& options)
         ContactScene scene{dir, bodyNames, {}};
         for (int b = 0; b < scene.nBodies(); ++b)
             scene.rigid.push_back(static_cast<std::size_t>(b) < in.rigidBodies.size() && in.rigidBodies[b]);
+        for (const auto& side : in.boundaries) scene.mirror.push_back(side->isMirror());
         in.contact = ContactPass<D>::New(contactDict, scene, in.grid);
         contactDict.warnUnused();
     }
