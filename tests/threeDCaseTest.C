@@ -14,7 +14,8 @@
 // - every scheme, transfer, shape function, the cell-mean dilatation, damping and mass
 //   scaling of the slab give the plane run; the stages geostaticFill (along -x3), openGate
 //   (a disc in the floor), moveTool and excavate; a rigid body turned about a slanted axis
-//   exactly; a rigid plate's oedometric force; the column collapse as a slab.
+//   exactly; a rigid plate's oedometric force, and its settlement under a dead load when it is
+//   load-driven (weighted); the column collapse as a slab.
 #include "case/CaseFiles.H"
 #include "io/GridVtk.H"
 #include "io/ParticlesVtk.H"
@@ -25,6 +26,7 @@
 #include <Eigen/Geometry>
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -339,6 +341,31 @@ TEST(ThreeDCase, aRigidPlatePressingABoxOfElasticMaterialFeelsTheOedometricForce
     EXPECT_GT(checked, 10u);
     const double d = v * rows.at("time").back(), W = 0.5 * M * A * d * d / L;
     EXPECT_NEAR(rows.at("plate:W").back(), W, 0.03 * W);
+}
+
+TEST(ThreeDCase, aWeightedPlateUnderADeadLoadSettlesOnTheElasticBoxToTheOedometricSettlement)
+{
+    // The scene above with the plate load-driven (weighted, free along x2 only, damped) under a
+    // dead load F = 100 N and no gravity: it comes to rest where the material carries F,
+    // d = F L / (M A) = 0.743 mm (within 3 %), and does not move across.
+    ScratchDir scratch{"weighted3d"};
+    Scene s = plateOnCube();
+    writeDictionary(scratch.path() / "constant/rigidBodies",
+                    "plate { type weighted; free (0 1 0); addedForce (0 -100 0); damping 0.5; }\n");
+    s.control = "startFrom latestTime;\nstartTime 0;\nstopAt endTime;\nendTime 0.4;\ndeltaT 1;\nadjustTimeStep yes;\n"
+                "maxCourant 0.5;\nwriteControl adjustableRunTime;\nwriteInterval 0.4;\ndamping 0.2;\n"
+                "functions { forces { type forces; bodies (plate); writeInterval 50; } }\n";
+    write(scratch.path(), s);
+    runAndKeep<3>(scratch.path());
+    const auto rows = readColumns(scratch.path() / "postProcessing/forces/0/forces.dat");
+    const double M = 1e6 * 0.7 / (1.3 * 0.4), A = 0.01, L = 0.1, F = 100;
+    const double d = F * L / (M * A);
+    std::printf("weighted plate settled %.4g mm (oedometric %.4g mm), carried %.4g N\n", -1e3 * rows.at("plate:dy").back(),
+                1e3 * d, rows.at("plate:Fy").back());
+    EXPECT_NEAR(-rows.at("plate:dy").back(), d, 0.03 * d);
+    EXPECT_NEAR(rows.at("plate:Fy").back(), F, 0.03 * F);
+    EXPECT_EQ(rows.at("plate:dx").back(), 0.0);
+    EXPECT_EQ(rows.at("plate:dz").back(), 0.0);
 }
 
 TEST(ThreeDCase, aGeostaticFillAlongMinusX3EndsAtTheK0StressOfTheColumn)
