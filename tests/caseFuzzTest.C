@@ -9,6 +9,7 @@
 // parser alone at length.
 #include "case/CaseFiles.H"
 #include "core/error.H"
+#include "support/Applications.H"
 #include "support/CaseRunner.H"
 
 #include <gtest/gtest.h>
@@ -138,7 +139,7 @@ template <int D> void fuzzTutorial(const std::string& tutorial, int perFile, uns
         for (const auto& entry : fs::directory_iterator(source / folder)) {
             if (!entry.is_regular_file()) continue;
             const std::string name = std::string(folder) + "/" + entry.path().filename().string();
-            const std::string text = fileBytes(entry.path());
+            const std::string text = readText(entry.path());
             for (int k = 0; k < perFile; ++k) {
                 const fs::path dir = scratch.path() / "case";
                 fs::remove_all(dir);

@@ -14,11 +14,12 @@
 // - every scheme, transfer, shape function, the cell-mean dilatation, damping and mass
 //   scaling of the slab give the plane run; the stages geostaticFill (along -x3), openGate
 //   (a disc in the floor), moveTool and excavate; a rigid body turned about a slanted axis
-//   exactly; a rigid plate's oedometric force, and its settlement under a dead load when it is
+//   exactly; a rigid plate's oedometric force (read back by picForces), and its settlement under a dead load when it is
 //   load-driven (weighted); the column collapse as a slab.
 #include "case/CaseFiles.H"
 #include "io/GridVtk.H"
 #include "io/ParticlesVtk.H"
+#include "support/Applications.H"
 #include "support/CaseRunner.H"
 
 #include <gtest/gtest.h>
@@ -216,7 +217,7 @@ TEST(ThreeDCase, aRestartedRunEndsWithTheStraightRunsParticleFileByteForByte)
     runAndKeep<3>(split);
     setEntry(split / "system/controlDict", "endTime", "0.05");
     continueRun<3>(split);
-    const std::string a = fileBytes(straight / "0.05/particles.vtp"), b = fileBytes(split / "0.05/particles.vtp");
+    const std::string a = readText(straight / "0.05/particles.vtp"), b = readText(split / "0.05/particles.vtp");
     ASSERT_FALSE(a.empty());
     EXPECT_TRUE(a == b) << "the restarted run's particles differ from the straight run's";
 
@@ -341,6 +342,18 @@ TEST(ThreeDCase, aRigidPlatePressingABoxOfElasticMaterialFeelsTheOedometricForce
     EXPECT_GT(checked, 10u);
     const double d = v * rows.at("time").back(), W = 0.5 * M * A * d * d / L;
     EXPECT_NEAR(rows.at("plate:W").back(), W, 0.03 * W);
+
+    // picForces reads the 3D forces.dat (its window mean is the table's), and refuses its
+    // plane-only modes in one line.
+    const AppResult forces = runApplication("picForces", scratch.path(), "-window 0.1 0.2");
+    ASSERT_EQ(forces.exitCode, 0) << forces.err;
+    EXPECT_NE(forces.out.find("plate:Fz"), std::string::npos) << forces.out;
+    EXPECT_TRUE(fs::exists(scratch.path() / "postProcessing/picForces/forces.png"));
+    const AppResult grid = runApplication("picForces", scratch.path(), "-source grid");
+    EXPECT_EQ(grid.exitCode, 1) << grid.err;
+    ASSERT_EQ(grid.errorLines.size(), 1u) << grid.err;
+    EXPECT_NE(grid.errorLines[0].find("picForces -source grid works on plane and axisymmetric cases"), std::string::npos)
+        << grid.err;
 }
 
 TEST(ThreeDCase, aWeightedPlateUnderADeadLoadSettlesOnTheElasticBoxToTheOedometricSettlement)

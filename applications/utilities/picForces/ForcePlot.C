@@ -20,21 +20,26 @@ std::string header(const std::string& pngPath)
 bool plotForces(const ForceSeries& series, const std::string& csvPath, const std::string& pngPath,
                 bool againstDisplacement)
 {
+    // A 3D case's forces.dat has a third component, and its forces are not per metre.
+    bool threeD = false;
+    for (const auto& name : series.names) threeD = threeD || (name.size() > 3 && name.substr(name.size() - 3) == ":Fz");
     std::ostringstream script;
     script << header(pngPath)
            << "set title 'Force of the material on the rigid bodies (" << (againstDisplacement ? "against displacement" : "against time")
-           << ")'\nset ylabel 'force [N/m]'\nset xlabel "
+           << ")'\nset ylabel " << (threeD ? "'force [N]'" : "'force [N/m]'") << "\nset xlabel "
            << (againstDisplacement ? "'displacement |d| [m]'" : "'time [s]'") << "\nplot ";
     bool first = true;
     for (std::size_t c = 1; c < series.names.size(); ++c) {
         const std::string& name = series.names[c];
         const auto colon = name.rfind(':');
         const std::string body = name.substr(0, colon), what = name.substr(colon + 1);
-        if (what != "Fx" && what != "Fy") continue;
+        if (what != "Fx" && what != "Fy" && what != "Fz") continue;
         std::string x = "1";
         if (againstDisplacement) {
             const int dx = series.column(body + ":dx") + 1, dy = series.column(body + ":dy") + 1;
-            x = "sqrt($" + std::to_string(dx) + "**2 + $" + std::to_string(dy) + "**2)";
+            x = "sqrt($" + std::to_string(dx) + "**2 + $" + std::to_string(dy) + "**2";
+            if (const int dz = series.column(body + ":dz") + 1; dz > 0) x += " + $" + std::to_string(dz) + "**2";
+            x += ")";
         }
         script << (first ? "" : ", \\\n     ") << gnuplotQuoted(csvPath) << " skip 1 using (" << (x == "1" ? "$1" : x)
                << "):" << c + 1 << " with lines lw 2 title " << gnuplotQuoted(name);

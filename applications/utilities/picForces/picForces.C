@@ -5,7 +5,8 @@
 //     surface_<time>.csv, .png         normal and shear stress along a tool face (-surface)
 //     wear.csv, wear.png               the toolWear function object's last wear profile (-wear)
 // and prints the time average over a window (-window t0 t1), as the seed averages the blade
-// forces over t = 2 ... 7 s (Case 4.7). See doc/forces.md.
+// forces over t = 2 ... 7 s (Case 4.7). See doc/forces.md. A 3D case's forces.dat (Fx Fy Fz
+// per body) is read the same way; the grid's contact forces, -surface and -wear are plane only.
 //
 //     picForces                                  # postProcessing/forces/<latest>/forces.dat
 //     picForces -x displacement -window 2 7
@@ -184,7 +185,12 @@ int main(int argc, char** argv)
         argc, argv, "picForces: forces on rigid bodies (CSV, plot, window mean) and stress along a tool face",
         options, [](const po::variables_map& vm) {
             const std::string caseDir = vm["case"].as<std::string>();
-            refuseThreeD(caseDir, "picForces", "read postProcessing/<name>/<time>/forces.dat, whose header names its columns (Fx Fy Fz Mx My Mz dx dy dz W per body)");
+            // The forces function object's file reads alike in 3D; the rest is plane geometry.
+            const std::string planeMode = vm.count("wear") ? "-wear" : vm.count("surface") ? "-surface"
+                                          : vm["source"].as<std::string>() == "grid" ? "-source grid" : "";
+            if (!planeMode.empty())
+                refuseThreeD(caseDir, "picForces " + planeMode,
+                             "picForces reads the forces function object's forces.dat of a 3D case (Fx Fy Fz per body)");
             const fs::path outDir = fs::path(caseDir) / "postProcessing" / "picForces";
             if (vm.count("wear")) return wearProfile(caseDir, outDir, vm);
             if (vm.count("surface")) return surfaceProfile(caseDir, outDir, vm);
