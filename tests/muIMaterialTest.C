@@ -19,6 +19,8 @@
 #include "plasticity/StressInvariants.H"
 #include "plasticity/YieldState.H"
 
+#include "support/MaterialInput.H"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -178,21 +180,9 @@ template <int D> void dilateAndRecompress()
     EXPECT_LE(shearStress(s), muS * -meanStress(s));
 }
 
-const char* const file = "constant/materials";
-
 void expectInputError(const std::string& entries, int line, const std::vector<std::string>& words)
 {
-    SCOPED_TRACE(entries);
-    try {
-        const Dictionary all = Dictionary::parse("// materials\nbeads\n{\n" + entries + "\n}\n", file);
-        Material<2>::New(all.subDict("beads"));
-        ADD_FAILURE() << "accepted";
-    } catch (const InputError& e) {
-        const std::string what = e.what();
-        EXPECT_EQ(what.find('\n'), std::string::npos) << "not one line: " << what;
-        EXPECT_EQ(what.rfind(std::string(file) + ":" + std::to_string(line) + ": ", 0), 0u) << what;
-        for (const auto& w : words) EXPECT_NE(what.find(w), std::string::npos) << "'" << w << "' missing: " << what;
-    }
+    gpic::test::expectMaterialRefused("beads", entries, line, words);
 }
 
 } // namespace

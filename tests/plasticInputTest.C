@@ -6,6 +6,7 @@
 #include "druckerPrager/DruckerPrager.H"
 #include "materials/Material.H"
 #include "plasticity/HardeningTable.H"
+#include "support/MaterialInput.H"
 
 #include <gtest/gtest.h>
 
@@ -15,29 +16,13 @@ using namespace gpic;
 
 namespace {
 
-const char* const file = "constant/materials";
+const char* const file = gpic::test::materialsFile;
 
-//- Parse `entries` as the body of `sand { ... }` in constant/materials (`sand` on line 2,
-//  the entries from line 4; a missing keyword is reported at line 2) and build it.
-std::unique_ptr<Material<2>> build(const std::string& entries)
-{
-    const Dictionary all = Dictionary::parse("// materials\nsand\n{\n" + entries + "\n}\n", file);
-    return Material<2>::New(all.subDict("sand"));
-}
+std::unique_ptr<Material<2>> build(const std::string& entries) { return gpic::test::buildMaterial("sand", entries); }
 
-//- Building must fail with an InputError on `line` that mentions each of `words`.
 void expectInputError(const std::string& entries, int line, const std::vector<std::string>& words)
 {
-    SCOPED_TRACE(entries);
-    try {
-        build(entries);
-        ADD_FAILURE() << "accepted";
-    } catch (const InputError& e) {
-        const std::string what = e.what();
-        EXPECT_EQ(what.find('\n'), std::string::npos) << "not one line: " << what;
-        EXPECT_EQ(what.rfind(std::string(file) + ":" + std::to_string(line) + ": ", 0), 0u) << what;
-        for (const auto& w : words) EXPECT_NE(what.find(w), std::string::npos) << "'" << w << "' missing: " << what;
-    }
+    gpic::test::expectMaterialRefused("sand", entries, line, words);
 }
 
 const std::string elastic = "type mohrCoulomb; rho 2000; K 2e7; G 1e7;\n";  // line 4

@@ -106,7 +106,7 @@ public:
     bool inside(const Vector3& x) const override
     {
         const bool inBox = (x.array() >= box_.first.array()).all() && (x.array() <= box_.second.array()).all();
-        return inBox && surface_.inside(x);  // the box first: the fill asks at every cell of the grid
+        return inBox && surface_.inside(x);  // the box first: cheaper than a ray (the fill asks a cell beyond it)
     }
     std::pair<Vector3, Vector3> bounds() const override { return box_; }
 
