@@ -144,6 +144,24 @@ template <int D> YieldPlanes MohrCoulomb<D>::planes(double epsPs, double epsPt) 
     }
     set.add(shear(0, 1));
     set.add(shear(1, 2));
+    if constexpr (D == 3) {
+        // Where a 3D point mostly returns (measured on the collapsing column of bench/): the
+        // compression edge sigma2 = sigma3 before the main plane, then the extension edge,
+        // and, with the cutoff, the corners the tension planes make with them. The plane case
+        // keeps its order of trial, and with it its results to the bit.
+        const unsigned main = 1u << 0, compressionEdge = 1u << (cutoff ? 4 : 1),
+                       extensionEdge = 1u << (cutoff ? 5 : 2), t3 = 1u << 1, t2 = 1u << 2, t1 = 1u << 3;
+        set.addLikely(main | compressionEdge);
+        set.addLikely(main);
+        if (cutoff) set.addLikely(main | t3 | extensionEdge);
+        set.addLikely(main | extensionEdge);
+        if (cutoff) {
+            set.addLikely(main | t3 | t2);
+            set.addLikely(main | t3);
+            set.addLikely(main | t3 | compressionEdge);
+            set.addLikely(main | t2 | t1);
+        }
+    }
     return set;
 }
 
@@ -173,8 +191,10 @@ template <int D> void MohrCoulomb<D>::updateStress(Particles<D>& p, const Partic
             rotateJaumann(s, p.dOmega[i]);
             elastic_.addElasticIncrement(s, p.dEps[i]);  // sigma_I, eq. H.2.1
             // Built in place: a copy would read back the values as they are being stored.
-            new (&principal[i - b]) PrincipalStresses<D>(s);  // eq. H.5.26 - H.5.33
+            if constexpr (D == 2) new (&principal[i - b]) PrincipalStresses<D>(s);  // eq. H.5.26 - H.5.33
         }
+        // 3D: all points of the batch at once (of a point lost, unused).
+        if constexpr (D == 3) PrincipalStresses<D>::compute(&p.sigma[b], e - b, principal.data());
         for (std::size_t i = b; i < e; ++i) {
             if (lost[i - b]) continue;
             // Properties at the start of the step: hardening lags one step (seed H.5.3).

@@ -162,6 +162,7 @@ PrincipalReturnResult PrincipalReturn::operator()(const Eigen::Vector3d& sigmaI,
     };
     // Neighbouring particles mostly return to the same region: the caller's set first.
     bool found = activeSetHint && *activeSetHint && trySet(activeSet(*activeSetHint));
+    for (int k = 0; !found && k < planes.nLikely; ++k) found = trySet(activeSet(planes.likely[k]));
     for (std::size_t s = 0; !found && s < activeSets.size(); ++s) found = trySet(activeSets[s]);
     if (activeSetHint) *activeSetHint = bestMask;
 

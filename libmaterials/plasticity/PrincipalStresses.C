@@ -54,7 +54,25 @@ PrincipalStresses<2>::PrincipalStresses(const Space<2>::SymTensor& s)
     for (int i = 0; i < 3; ++i) position_[axis_[i]] = i;
 }
 
+namespace {
+
+//- cos(acos(x)/3) on [0, 1] (the largest root of the depressed cubic as a share of its
+//  bound), least-squares quartic, within 1e-5: a start from which two Newton steps reach
+//  round-off (the error squares, times at most 1.5, each step).
+inline double cosThirdOfArcCos(double x)
+{
+    return 0.8660344308373332 +
+           x * (0.16637630239747223 + x * (-0.04585719330771227 + x * (0.01750433351833614 + x * -0.00406467435786341)));
+}
+
+} // namespace
+
 PrincipalStresses<3>::PrincipalStresses(const Space<3>::SymTensor& s)
+{
+    compute(&s, 1, this);
+}
+
+void PrincipalStresses<3>::special(const Space<3>::SymTensor& s)
 {
     if (s[XY] == 0.0 && s[YZ] == 0.0 && s[XZ] == 0.0) {
         // Already principal: keep the coordinate axes exactly, equal values in axis order.
@@ -72,58 +90,110 @@ PrincipalStresses<3>::PrincipalStresses(const Space<3>::SymTensor& s)
         }
         return;
     }
+    // Isotropic to round-off (or not finite): no axis stands out.
     Eigen::Matrix3d S;
     S << s[XX], s[XY], s[XZ], s[XY], s[YY], s[YZ], s[XZ], s[YZ], s[ZZ];
-    // The values in closed form; the axes by deflation, accurate near a double root too (the
-    // edges of a Mohr-Coulomb pyramid, a body at rest with equal lateral stresses), where the
-    // closed form's own axes lose accuracy as 1 / gap: the axis of the value farther from the
-    // middle one (well separated from the other two) from S - l I, whose rows' largest cross
-    // product it is, and the other two from the 2 x 2 problem in the plane normal to it.
-    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen;
-    eigen.computeDirect(S, Eigen::EigenvaluesOnly);  // ascending
-    const Eigen::Vector3d l = eigen.eigenvalues();
-    if (!(l[2] - l[0] > 1e-12 * std::max(std::abs(l[0]), std::abs(l[2])))) {
-        eigen.compute(S);  // isotropic to round-off: no axis stands out
-        sigma_ = eigen.eigenvalues();
-        axes_ = eigen.eigenvectors();
-        return;
-    }
-    const bool lowPair = l[1] - l[0] < l[2] - l[1];  // the pair sigma1, sigma2; else sigma2, sigma3
-    const int distinct = lowPair ? 2 : 0;
-    const auto axisOf = [&S](double value) {
-        const Eigen::Matrix3d T = S - value * Eigen::Matrix3d::Identity();
-        const Eigen::Vector3d c01 = T.row(0).cross(T.row(1)), c02 = T.row(0).cross(T.row(2)),
-                              c12 = T.row(1).cross(T.row(2));
-        const double n01 = c01.squaredNorm(), n02 = c02.squaredNorm(), n12 = c12.squaredNorm();
-        return Eigen::Vector3d((n01 >= n02 && n01 >= n12 ? c01 : n02 >= n12 ? c02 : c12).normalized());
-    };
-    const Eigen::Vector3d n = axisOf(l[distinct]);
-    // An orthonormal pair (u, w) spanning the plane normal to n.
-    const Eigen::Vector3d u =
-        (std::abs(n.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY()).cross(n).normalized();
-    const Eigen::Vector3d w = n.cross(u);
-    const double a = u.dot(S * u), b = u.dot(S * w), d = w.dot(S * w);
-    // The 2 x 2 symmetric problem [[a b] [b d]] in closed form, as the plane case: the mean,
-    // the radius, and the major axis at angle theta in (u, w).
-    const double mean = 0.5 * (a + d), half = 0.5 * (a - d), radius = std::sqrt(half * half + b * b);
-    double ct = 1.0, st = 0.0;  // a round pair: any axes in the plane
-    if (radius > 0.0) {
-        if (half >= 0.0) {
-            ct = std::sqrt(0.5 * (1.0 + half / radius));
-            st = b / (2.0 * radius * ct);
-        } else {
-            st = std::copysign(std::sqrt(0.5 * (1.0 - half / radius)), b);
-            ct = b / (2.0 * radius * st);
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(S);
+    sigma_ = eigen.eigenvalues();
+    axes_ = eigen.eigenvectors();
+}
+
+void PrincipalStresses<3>::compute(const Space<3>::SymTensor* s, std::size_t n, PrincipalStresses<3>* out)
+{
+    // Each stage runs over every point before the next: a point's stages are one long chain
+    // of square roots and divisions, and the chains of different points then overlap.
+    constexpr std::size_t N = batch;
+    for (std::size_t b = 0; b < n; b += N) {
+        const std::size_t m = std::min(N, n - b);
+        const Space<3>::SymTensor* sb = s + b;
+        PrincipalStresses<3>* ob = out + b;
+        double p[N], dxx[N], dyy[N], dzz[N], dxy[N], dyz[N], dxz[N], J2[N], lt[N];
+        bool general[N];
+        // The deviator d = sigma - p I and its invariants: its values are the roots of
+        // t^3 - J2 t - J3 = 0. The value farthest from the middle one is the largest when
+        // J3 >= 0 (the other two are then both negative, at least its size away) and the
+        // smallest otherwise: a simple root, well apart from the pair. Its size t is the
+        // largest root of t^3 - J2 t - |J3|, in closed form 2 r cos(acos(x)/3) with
+        // r = sqrt(J2/3), x = |J3| / (2 r^3) in [0, 1]: here from a polynomial start and two
+        // Newton steps instead of an arc cosine and a cosine.
+        for (std::size_t i = 0; i < m; ++i) {
+            const Space<3>::SymTensor& t = sb[i];
+            p[i] = (t[XX] + t[YY] + t[ZZ]) / 3.0;
+            dxx[i] = t[XX] - p[i];
+            dyy[i] = t[YY] - p[i];
+            dzz[i] = t[ZZ] - p[i];
+            dxy[i] = t[XY];
+            dyz[i] = t[YZ];
+            dxz[i] = t[XZ];
+            J2[i] = 0.5 * (dxx[i] * dxx[i] + dyy[i] * dyy[i] + dzz[i] * dzz[i]) + dxy[i] * dxy[i] +
+                    dyz[i] * dyz[i] + dxz[i] * dxz[i];
         }
-    }
-    const Eigen::Vector3d major = ct * u + st * w, minor = -st * u + ct * w;
-    const double nValue = n.dot(S * n);
-    if (lowPair) {  // ascending: the pair's smaller value on the minor axis
-        sigma_ << mean - radius, mean + radius, nValue;
-        axes_ << minor, major, n;
-    } else {
-        sigma_ << nValue, mean - radius, mean + radius;
-        axes_ << n, minor, major;
+        for (std::size_t i = 0; i < m; ++i) {
+            const double J3 = dxx[i] * (dyy[i] * dzz[i] - dyz[i] * dyz[i]) - dxy[i] * (dxy[i] * dzz[i] - dyz[i] * dxz[i]) +
+                              dxz[i] * (dxy[i] * dyz[i] - dyy[i] * dxz[i]);
+            const double r = std::sqrt(J2[i] / 3.0);  // the roots lie in [-2r, 2r]
+            // A diagonal stress keeps its axes exactly; an isotropic one to round-off has none.
+            general[i] = !(dxy[i] == 0.0 && dyz[i] == 0.0 && dxz[i] == 0.0) && r > 1e-13 * std::abs(p[i]);
+            const double rr = general[i] ? r : 1.0, q = std::abs(J3);
+            double t = 2.0 * rr * cosThirdOfArcCos(std::min(q / (2.0 * rr * rr * rr), 1.0));
+            const double j2 = general[i] ? J2[i] : 1.0;
+            for (int k = 0; k < 2; ++k) t -= (t * (t * t - j2) - q) / (3.0 * t * t - j2);
+            lt[i] = J3 >= 0.0 ? t : -t;
+        }
+        for (std::size_t i = 0; i < m; ++i) {
+            // The axis of lt: the largest cross product of two rows of d - lt I (rank 2).
+            const double r0x = dxx[i] - lt[i], r1y = dyy[i] - lt[i], r2z = dzz[i] - lt[i];
+            const double xy = dxy[i], yz = dyz[i], xz = dxz[i];
+            const double c01x = xy * yz - xz * r1y, c01y = xz * xy - r0x * yz, c01z = r0x * r1y - xy * xy;
+            const double c02x = xy * r2z - xz * yz, c02y = xz * xz - r0x * r2z, c02z = r0x * yz - xy * xz;
+            const double c12x = r1y * r2z - yz * yz, c12y = yz * xz - xy * r2z, c12z = xy * yz - r1y * xz;
+            const double n01 = c01x * c01x + c01y * c01y + c01z * c01z,
+                         n02 = c02x * c02x + c02y * c02y + c02z * c02z,
+                         n12 = c12x * c12x + c12y * c12y + c12z * c12z;
+            const bool first = n01 >= n02 && n01 >= n12, second = !first && n02 >= n12;
+            const double cx = first ? c01x : second ? c02x : c12x, cy = first ? c01y : second ? c02y : c12y,
+                         cz = first ? c01z : second ? c02z : c12z, nn = first ? n01 : second ? n02 : n12;
+            const double inverse = 1.0 / std::sqrt(general[i] ? nn : 1.0);
+            const double nx = cx * inverse, ny = cy * inverse, nz = cz * inverse;
+            // An orthonormal pair (u, w) spanning the plane normal to n: u = e x n / |e x n|
+            // with e the axis x1, or x2 when n lies near x1; w = n x u.
+            const bool nearX = !(std::abs(nx) < 0.9);
+            const double ux = nearX ? nz : 0.0, uy = nearX ? 0.0 : -nz, uz = nearX ? -nx : ny;
+            const double length2 = ux * ux + uy * uy + uz * uz;
+            const double l = 1.0 / std::sqrt(general[i] ? length2 : 1.0);
+            const double Ux = ux * l, Uy = uy * l, Uz = uz * l;
+            const double wx = ny * Uz - nz * Uy, wy = nz * Ux - nx * Uz, wz = nx * Uy - ny * Ux;
+            // The deviator in the plane: [[a b] [b e]] on (u, w).
+            const double dux = dxx[i] * Ux + xy * Uy + xz * Uz, duy = xy * Ux + dyy[i] * Uy + yz * Uz,
+                         duz = xz * Ux + yz * Uy + dzz[i] * Uz;
+            const double dwx = dxx[i] * wx + xy * wy + xz * wz, dwy = xy * wx + dyy[i] * wy + yz * wz,
+                         dwz = xz * wx + yz * wy + dzz[i] * wz;
+            const double a = Ux * dux + Uy * duy + Uz * duz, bb = wx * dux + wy * duy + wz * duz,
+                         e = wx * dwx + wy * dwy + wz * dwz;
+            // The 2 x 2 problem in closed form, as the plane case: the mean, the radius, and
+            // the major axis at angle theta in (u, w), from half-angle forms free of
+            // cancellation; a round pair (radius 0) takes any axes in the plane.
+            const double mean = 0.5 * (a + e), half = 0.5 * (a - e), radius = std::sqrt(half * half + bb * bb);
+            const bool round = !(radius > 0.0);
+            const double rad = round ? 1.0 : radius;
+            const double big = std::sqrt(0.5 * (1.0 + std::abs(half) / rad));  // the larger of |cos|, |sin|
+            const double small = bb / (2.0 * rad * big);
+            // half < 0: sin theta takes the sign of b and cos theta = b / (2 R sin theta) = |small|.
+            const double ctFixed = round ? 1.0 : half >= 0.0 ? big : std::abs(small),
+                         st = round ? 0.0 : half >= 0.0 ? small : std::copysign(big, bb);
+            const double majx = ctFixed * Ux + st * wx, majy = ctFixed * Uy + st * wy, majz = ctFixed * Uz + st * wz;
+            const double minx = -st * Ux + ctFixed * wx, miny = -st * Uy + ctFixed * wy, minz = -st * Uz + ctFixed * wz;
+            PrincipalStresses<3>& o = ob[i];
+            if (lt[i] >= 0.0) {  // the distinct value is the largest; ascending, the pair's smaller first
+                o.sigma_ << p[i] + (mean - radius), p[i] + (mean + radius), p[i] + lt[i];
+                o.axes_ << minx, majx, nx, miny, majy, ny, minz, majz, nz;
+            } else {
+                o.sigma_ << p[i] + lt[i], p[i] + (mean - radius), p[i] + (mean + radius);
+                o.axes_ << nx, minx, majx, ny, miny, majy, nz, minz, majz;
+            }
+        }
+        for (std::size_t i = 0; i < m; ++i)
+            if (!general[i]) ob[i].special(sb[i]);
     }
 }
 
