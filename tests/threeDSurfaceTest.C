@@ -8,6 +8,8 @@
 // - a rigid tool drawn as STL is written in every time directory (<body>.vtp, indexed in the
 //   .pvd) where its particles carry it: turned about a slanted axis, its corners lie where
 //   Rodrigues' rotation puts them (1e-12 m), and a restarted run writes the same surface;
+// - a tool drawn as an ASCII STL of named solids reports the force on each part (forces):
+//   the plate pressing an elastic cube, its underside taking the force, the parts adding up;
 // - a surface that cannot bound a solid (open, not manifold, turned inward, folded, crossing
 //   itself, with a degenerate facet) or a file that is missing or not STL is refused in one
 //   line naming the file, the keyword and the first fault.
@@ -303,4 +305,66 @@ TEST(ThreeDSurface, aRigidToolFromStlIsWrittenInEveryTimeDirectoryWhereItsPartic
     setEntry(restarted / "system/controlDict", "endTime", "0.5");
     continueRun<3>(restarted);
     EXPECT_EQ(readText(restarted / "0.5/ball.vtp"), readText(straight / "0.5/ball.vtp"));
+}
+
+TEST(ThreeDSurface, aToolDrawnWithNamedPartsReportsTheForceOnEachPart)
+{
+    // The rigid plate of the oedometric test (threeDCaseTest) drawn as an ASCII STL of three
+    // solids: its top, its underside and its four sides, the underside not first. Pressed into
+    // the elastic cube (smooth walls, fixed floor) at 0.01 m/s, the material pushes on the
+    // underside alone: the underside takes the plate's force within 1 %, the top and the sides
+    // less than 1 % of it, and the parts add up to the plate's force to round-off. The
+    // surface reads as three parts; a binary copy of it, which has no names, as one.
+    ScratchDir scratch{"stlParts"};
+    const fs::path dir = scratch.path();
+    const StlSurface plate = boxSurface({0, 0.1, 0}, {0.1, 0.125, 0.1});
+    std::vector<std::string> partOf;
+    for (const auto& t : plate.facets) {
+        const Eigen::Vector3d n = (plate.corners[t[1]] - plate.corners[t[0]]).cross(plate.corners[t[2]] - plate.corners[t[0]]);
+        partOf.push_back(n.y() > 0 ? "top" : n.y() < 0 ? "underside" : "sides");
+    }
+    if (partOf[0] == "underside") std::swap(partOf[0], partOf[1]);  // not first in the file
+    ASSERT_NE(partOf.front(), "underside");
+    writeAsciiStl(dir / "constant/triSurface/plate.stl", plate, partOf);
+    writeBinaryStl(dir / "constant/triSurface/plateBinary.stl", plate);
+    const TriSurface named = readIn(dir, "file \"triSurface/plate.stl\";");
+    ASSERT_EQ(named.partNames().size(), 3u);
+    for (std::size_t f = 0; f < named.facets().size(); ++f) {
+        const Eigen::Vector3d n = named.facetNormal(static_cast<int>(f));
+        const std::string& part = named.partNames()[static_cast<std::size_t>(named.partOf(static_cast<int>(f)))];
+        EXPECT_EQ(part, n.y() > 0.5 ? "top" : n.y() < -0.5 ? "underside" : "sides") << "facet " << f;
+    }
+    EXPECT_EQ(readIn(dir, "file \"triSurface/plateBinary.stl\";").partNames().size(), 1u);
+
+    writeDictionary(dir / "constant/grid", "origin (0 0 0); cellSize 0.025; nCells (4 6 4);\nboundaries { left { type "
+                                           "slip; } right { type slip; } bottom { type fixed; } top { type free; } back "
+                                           "{ type slip; } front { type slip; } }\n");
+    writeDictionary(dir / "constant/materials", "rubber { type linearElastic; rho 1000; E 1e6; nu 0.3; }\nsteel { type "
+                                                "linearElastic; rho 7800; E 2e11; nu 0.3; }\n");
+    writeDictionary(dir / "constant/bodies",
+                    "cube { material rubber; shape { type box; min (0 0 0); max (0.1 0.1 0.1); } particlesPerCell 2; }\n"
+                    "plate { material steel; shape { type triSurface; file \"triSurface/plate.stl\"; } particlesPerCell 2; }\n");
+    writeDictionary(dir / "constant/rigidBodies", "plate { type prescribedVelocity; velocity (0 -0.01 0); }\n");
+    writeDictionary(dir / "system/controlDict",
+                    "startFrom latestTime;\nstartTime 0;\nstopAt endTime;\nendTime 0.1;\ndeltaT 1;\nadjustTimeStep yes;\n"
+                    "maxCourant 0.5;\nwriteControl adjustableRunTime;\nwriteInterval 0.1;\n"
+                    "functions { forces { type forces; bodies (plate); writeInterval 25; } }\n");
+    runAndKeep<3>(dir);
+    const auto rows = readColumns(dir / "postProcessing/forces/0/forces.dat");
+    std::size_t checked = 0;
+    for (std::size_t r = 0; r < rows.at("time").size(); ++r) {
+        if (rows.at("time")[r] < 0.05) continue;  // the first waves
+        const double F = rows.at("plate:Fy")[r];
+        ASSERT_GT(F, 0.0);
+        EXPECT_NEAR(rows.at("plate.underside:Fy")[r], F, 0.01 * F);
+        for (const char* part : {"plate.top", "plate.sides"})
+            for (const char* c : {":Fx", ":Fy", ":Fz"}) EXPECT_LT(std::abs(rows.at(std::string(part) + c)[r]), 0.01 * F);
+        for (const char* c : {"Fx", "Fy", "Fz"}) {
+            double sum = 0;
+            for (const char* part : {"plate.top", "plate.underside", "plate.sides"}) sum += rows.at(std::string(part) + ":" + c)[r];
+            EXPECT_NEAR(sum, rows.at(std::string("plate:") + c)[r], 1e-9 * F) << c;
+        }
+        ++checked;
+    }
+    EXPECT_GT(checked, 3u);
 }

@@ -15,8 +15,10 @@
 
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <sstream>
 
@@ -47,6 +49,30 @@ void buildMesh(const std::vector<TriSurface::Vector>& corners, const std::vector
     soup.reserve(facets.size());
     for (const TriSurface::Facet& t : facets) soup.push_back({std::size_t(t[0]), std::size_t(t[1]), std::size_t(t[2])});
     CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, soup, mesh);
+}
+
+//- The solids of an ASCII STL file in order, with their names and facet counts; empty for a
+//  binary file (whose 80-byte header may begin with "solid" too: the caller compares counts).
+std::vector<std::pair<std::string, std::size_t>> asciiSolids(const std::string& path)
+{
+    std::ifstream in(path);
+    std::vector<std::pair<std::string, std::size_t>> solids;
+    std::string line;
+    while (std::getline(in, line)) {
+        std::istringstream words(line);
+        std::string word;
+        if (!(words >> word)) continue;
+        if (word == "solid") {
+            std::string name;
+            words >> name;
+            solids.emplace_back(name, 0);
+        } else if (word == "facet" && !solids.empty()) {
+            ++solids.back().second;
+        } else if (solids.empty()) {
+            return {};  // not an ASCII STL
+        }
+    }
+    return solids;
 }
 
 } // namespace
@@ -105,6 +131,22 @@ TriSurface TriSurface::read(const Dictionary& dict)
         facets.push_back({static_cast<int>(f[0]), static_cast<int>(f[1]), static_cast<int>(f[2])});
     TriSurface surface(std::move(corners), std::move(facets), shown);
     if (const std::string why = surface.fault(); !why.empty()) dict.fail("file", "surface \"" + shown + "\" " + why);
+    // Parts: the ASCII file's solids, facets in the order CGAL read them (the file's).
+    const auto solids = asciiSolids(path);
+    std::size_t counted = 0;
+    for (const auto& solid : solids) counted += solid.second;
+    if (!solids.empty() && counted == surface.facets_.size()) {
+        surface.partNames_.clear();
+        surface.partOfFacet_.reserve(counted);
+        for (std::size_t k = 0; k < solids.size(); ++k) {
+            const std::string name = solids[k].first.empty() ? "part" + std::to_string(k + 1) : solids[k].first;
+            const auto known = std::find(surface.partNames_.begin(), surface.partNames_.end(), name);
+            const int part = static_cast<int>(known - surface.partNames_.begin());
+            if (known == surface.partNames_.end()) surface.partNames_.push_back(name);
+            surface.partOfFacet_.insert(surface.partOfFacet_.end(), solids[k].second, part);
+        }
+        if (surface.partNames_.size() == 1) surface.partOfFacet_.clear();
+    }
     return surface;
 }
 

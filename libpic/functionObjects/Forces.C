@@ -6,6 +6,7 @@
 #include "engine/MpmSolver.H"
 #include "grid/FaceBand.H"
 #include "grid/Grid.H"
+#include "bodies/RigidPose.H"
 
 #include <algorithm>
 
@@ -56,6 +57,17 @@ void Forces<D>::start(const MpmSolver<D>& solver, double)
                                                choiceList(rigid));
         bodies_.push_back(static_cast<int>(std::find(all.begin(), all.end(), n) - all.begin()));
     }
+    parts_.clear();
+    if constexpr (D == 3) {
+        std::vector<bool> isRigid(all.size());
+        for (int b : bodies_) isRigid[static_cast<std::size_t>(b)] = true;
+        tools_ = std::make_shared<const ToolSurfaces<D>>(context().caseDir, all, isRigid);
+        for (const auto& tool : tools_->tools())
+            if (tool.surface.partNames().size() > 1)
+                for (std::size_t k = 0; k < tool.surface.partNames().size(); ++k)
+                    parts_.push_back({tool.body, tool.name + "." + tool.surface.partNames()[k], &tool.surface,
+                                      static_cast<int>(k)});
+    }
     if (!restarted() || work_.size() != bodies_.size()) work_.assign(bodies_.size(), 0.0);
     for (auto& face : faces_) {
         if (std::find(rigid.begin(), rigid.end(), face.bodyName) == rigid.end())
@@ -80,6 +92,8 @@ void Forces<D>::start(const MpmSolver<D>& solver, double)
             for (const char* c : {"Fx", "Fy", "Fz", "Mx", "My", "Mz", "dx", "dy", "dz"}) os << ' ' << all[b] << ':' << c;
     }
     for (const auto& face : faces_) os << ' ' << face.name << ":Fx " << face.name << ":Fy";
+    for (const auto& part : parts_)
+        for (const char* c : {"Fx", "Fy", "Fz"}) os << ' ' << part.name << ':' << c;
     for (int b : bodies_) os << ' ' << all[b] << ":W";
     axisymmetric_ = solver.grid().axisymmetric();
     if (axisymmetric_)
@@ -129,6 +143,7 @@ void Forces<D>::write(const MpmSolver<D>& solver, double time)
             os << ' ' << F.x() << ' ' << F.y();
         }
     }
+    if constexpr (D == 3) writeParts(solver, os);
     for (double w : work_) os << ' ' << w;
     if (axisymmetric_)
         for (int b : bodies_) {
@@ -136,6 +151,49 @@ void Forces<D>::write(const MpmSolver<D>& solver, double time)
             os << ' ' << 2.0 * M_PI * (k < loads.size() ? loads[k].force.y() : 0.0);
         }
     os << std::endl;  // readable while the run goes on
+}
+
+template <int D>
+void Forces<D>::writeParts(const MpmSolver<D>& solver, std::ostream& os) const
+{
+    if constexpr (D == 3) {
+        if (parts_.empty()) return;
+        const Grid<D>& grid = solver.grid();
+        const double reach = 2.0 * grid.cellSize().maxCoeff();
+        std::vector<Vector> F(parts_.size(), Vector::Zero());
+        // Part after part of one body are neighbours in parts_: one pose and one pass over
+        // the nodes per body.
+        for (std::size_t first = 0; first < parts_.size();) {
+            const Part& tool = parts_[first];
+            std::size_t last = first;
+            while (last < parts_.size() && parts_[last].body == tool.body) ++last;
+            const RigidPose pose = RigidPose::of(solver.particles(), tool.body);
+            if (!grid.fContact.empty())
+                for (int n : grid.active) {
+                    const Vector& f = grid.fContact[static_cast<std::size_t>(n)];
+                    if (f.isZero()) continue;
+                    const Vector X = pose.unplace(grid.nodePosition(n));
+                    const TriSurface::FacetPoint near = tool.surface->nearest(X);
+                    if (near.distance > reach) continue;
+                    // A node by an edge is about as near to the faces on either side of it (on
+                    // the edge itself, exactly): the material pushes on the face it meets, the
+                    // one whose outward normal is most against the node's force on the body.
+                    const Vector push = pose.unturn(f);
+                    int facet = near.facet;
+                    double against = -push.dot(tool.surface->facetNormal(facet));
+                    for (const auto& other : tool.surface->facetsNear(X, near.distance + 0.5 * grid.cellSize().minCoeff())) {
+                        const double a = -push.dot(tool.surface->facetNormal(other.facet));
+                        if (a > against) {
+                            against = a;
+                            facet = other.facet;
+                        }
+                    }
+                    F[first + static_cast<std::size_t>(tool.surface->partOf(facet))] += f;
+                }
+            first = last;
+        }
+        for (const Vector& f : F) os << ' ' << f.x() << ' ' << f.y() << ' ' << f.z();
+    }
 }
 
 template <int D>
