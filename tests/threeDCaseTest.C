@@ -302,11 +302,11 @@ TEST(ThreeDCase, planeOnlyModelsGridsShapesAndFunctionObjectsAreRefusedInOneLine
     EXPECT_NE(rectangle.find("shape type 'rectangle'"), std::string::npos) << rectangle;
     EXPECT_NE(rectangle.find("plane (2D) scenes only"), std::string::npos) << rectangle;
 
-    const std::string wear = attempt("toolWear", [](Scene& s) {
-        s.control += "functions { wear { type toolWear; body column; } }\n";
+    const std::string fill = attempt("toolFill", [](Scene& s) {
+        s.control += "functions { fill { type toolFill; body column; } }\n";
     });
-    EXPECT_NE(wear.find("functionObject type 'toolWear'"), std::string::npos) << wear;
-    EXPECT_NE(wear.find("plane (2D) scenes only"), std::string::npos) << wear;
+    EXPECT_NE(fill.find("functionObject type 'toolFill'"), std::string::npos) << fill;
+    EXPECT_NE(fill.find("plane (2D) scenes only"), std::string::npos) << fill;
 }
 
 TEST(ThreeDCase, aRigidPlatePressingABoxOfElasticMaterialFeelsTheOedometricForce)

@@ -274,4 +274,26 @@ std::vector<TriSurface::FacetPoint> TriSurface::facetsNear(const Vector& x, doub
     return near;
 }
 
+int TriSurface::facetPushedBy(const Vector& x, const Vector& push, double band, double reach) const
+{
+    const FacetPoint near = nearest(x);
+    if (near.distance > reach) return -1;
+    int facet = near.facet;
+    double against = -push.dot(facetNormal(facet));
+    for (const FacetPoint& other : facetsNear(x, near.distance + band)) {
+        const double a = -push.dot(facetNormal(other.facet));
+        if (a > against) {
+            against = a;
+            facet = other.facet;
+        }
+    }
+    return facet;
+}
+
+double TriSurface::facetArea(int f) const
+{
+    const Facet& t = facets_[static_cast<std::size_t>(f)];
+    return 0.5 * (corners_[t[1]] - corners_[t[0]]).cross(corners_[t[2]] - corners_[t[0]]).norm();
+}
+
 } // namespace gpic

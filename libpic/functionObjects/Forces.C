@@ -172,22 +172,9 @@ void Forces<D>::writeParts(const MpmSolver<D>& solver, std::ostream& os) const
                 for (int n : grid.active) {
                     const Vector& f = grid.fContact[static_cast<std::size_t>(n)];
                     if (f.isZero()) continue;
-                    const Vector X = pose.unplace(grid.nodePosition(n));
-                    const TriSurface::FacetPoint near = tool.surface->nearest(X);
-                    if (near.distance > reach) continue;
-                    // A node by an edge is about as near to the faces on either side of it (on
-                    // the edge itself, exactly): the material pushes on the face it meets, the
-                    // one whose outward normal is most against the node's force on the body.
-                    const Vector push = pose.unturn(f);
-                    int facet = near.facet;
-                    double against = -push.dot(tool.surface->facetNormal(facet));
-                    for (const auto& other : tool.surface->facetsNear(X, near.distance + 0.5 * grid.cellSize().minCoeff())) {
-                        const double a = -push.dot(tool.surface->facetNormal(other.facet));
-                        if (a > against) {
-                            against = a;
-                            facet = other.facet;
-                        }
-                    }
+                    const int facet = tool.surface->facetPushedBy(pose.unplace(grid.nodePosition(n)), pose.unturn(f),
+                                                                  0.5 * grid.cellSize().minCoeff(), reach);
+                    if (facet < 0) continue;
                     F[first + static_cast<std::size_t>(tool.surface->partOf(facet))] += f;
                 }
             first = last;

@@ -5,6 +5,7 @@
 #include "io/VtkErrorGuard.H"
 
 #include <vtkCellArray.h>
+#include <vtkCellData.h>
 #include <vtkCommand.h>
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
@@ -22,7 +23,7 @@
 namespace gpic {
 
 void writeSurface(const std::string& path, const std::vector<Space<3>::Vector>& corners,
-                  const std::vector<std::array<int, 3>>& facets, double time)
+                  const std::vector<std::array<int, 3>>& facets, double time, const std::vector<FacetField>& fields)
 {
     vtkNew<vtkPoints> points;
     points->SetDataTypeToDouble();
@@ -42,6 +43,13 @@ void writeSurface(const std::string& path, const std::vector<Space<3>::Vector>& 
     timeValue->SetNumberOfValues(1);
     timeValue->SetValue(0, time);
     surface->GetFieldData()->AddArray(timeValue);
+    for (const FacetField& field : fields) {
+        vtkNew<vtkDoubleArray> values;
+        values->SetName(field.name.c_str());
+        values->SetNumberOfValues(static_cast<vtkIdType>(field.values.size()));
+        for (std::size_t f = 0; f < field.values.size(); ++f) values->SetValue(static_cast<vtkIdType>(f), field.values[f]);
+        surface->GetCellData()->AddArray(values);
+    }
     vtkNew<vtkXMLPolyDataWriter> writer;
     detail::writeXmlAtomically(writer, surface, path, "surface");
 }
@@ -64,6 +72,14 @@ SurfaceVtkInfo readSurface(const std::string& path)
     vtkFieldData* fd = surface->GetFieldData();
     vtkDataArray* timeA = fd ? fd->GetArray("TimeValue") : nullptr;
     if (timeA && timeA->GetNumberOfTuples() > 0) info.time = timeA->GetComponent(0, 0);
+    if (vtkCellData* cd = surface->GetCellData())
+        for (int a = 0; a < cd->GetNumberOfArrays(); ++a) {
+            vtkDataArray* array = cd->GetArray(a);
+            if (!array || !array->GetName()) continue;
+            FacetField field{array->GetName(), {}};
+            for (vtkIdType c = 0; c < array->GetNumberOfTuples(); ++c) field.values.push_back(array->GetComponent(c, 0));
+            info.fields.push_back(std::move(field));
+        }
     return info;
 }
 
