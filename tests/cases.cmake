@@ -31,6 +31,12 @@ set_tests_properties(fuzzDictionary PROPERTIES TIMEOUT 600 LABELS integration)
 add_test(NAME keywordDrift COMMAND python3 ${PROJECT_SOURCE_DIR}/etc/python/keywordTables.py check ${PROJECT_SOURCE_DIR})
 set_tests_properties(keywordDrift PROPERTIES TIMEOUT 60 ENVIRONMENT "PYTHONDONTWRITEBYTECODE=1")
 
+# Every script a user runs answers -help, --help and -h alike, from a scratch copy
+# (tests/scripts/scriptsHelp.sh): the Allrun, Allclean, Allvalidate, bench/run, picStudy.
+add_test(NAME scriptsHelp
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/scripts/scriptsHelp.sh ${PROJECT_SOURCE_DIR} ${PROJECT_BINARY_DIR})
+set_tests_properties(scriptsHelp PROPERTIES TIMEOUT 120)
+
 # The ParaView scripts (etc/paraview, each tutorial's paraviewParticles.py) at least compile:
 # ParaView itself cannot be installed beside the build's VTK (doc/userGuide/output.md,
 # "Output for ParaView").
