@@ -11,6 +11,8 @@ Two uses (python3, standard library only):
 
     keywordTables.py header SOURCE_DIR OUT.H   write the tables as C++ for picToC (the build)
     keywordTables.py check SOURCE_DIR          the drift test (CTest keywordDrift)
+    keywordTables.py markdown SOURCE_DIR TYPE  the guide's copy of TYPE's table
+    keywordTables.py types SOURCE_DIR          the registered types
 
 `check` fails, one line per finding, when
   - a keyword the code reads (a string literal given to a Dictionary getter, or to one of
@@ -367,6 +369,9 @@ def markdown(root, wanted):
 
 
 def main(argv):
+    if len(argv) >= 3 and argv[1] == "types":
+        print(" ".join(sorted({name for _, name, *rest in registered_types(argv[2])})))
+        return 0
     if len(argv) >= 4 and argv[1] == "markdown":
         markdown(argv[2], argv[3])
         return 0
@@ -379,7 +384,8 @@ def main(argv):
     if len(argv) >= 4 and argv[1] == "header":
         header(argv[2], argv[3])
         return 0
-    print(__doc__.split("\n\n")[0] + "\nusage: keywordTables.py check SOURCE_DIR | header SOURCE_DIR OUT.H")
+    print(__doc__.split("\n\n")[0] + "\nusage: keywordTables.py check SOURCE_DIR | header SOURCE_DIR OUT.H | "
+          "markdown SOURCE_DIR TYPE | types SOURCE_DIR")
     return 0 if len(argv) > 1 and argv[1] in ("-help", "--help", "-h") else 2
 
 
