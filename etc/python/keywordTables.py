@@ -33,6 +33,7 @@ GETTERS = ("get", "getOrDefault", "getChecked", "getWord", "getWordOrDefault", "
 # Readers that take the keyword as an argument and hand it to the getters (a literal given to
 # them is a keyword read).
 READERS = ("read", "readVector",                 # TimeFunction: a number, expression or table
+           "VectorField",                        # a vector or expressions of x, y, z
            "open",                               # Plugins::open(dict, "libs")
            "select",                             # Registry::select(word, dict, ..., "keyword")
            "bodyId", "bodyIds", "setOpening",    # stages and function objects: body names
