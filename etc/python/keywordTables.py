@@ -21,7 +21,8 @@ Two uses (python3, standard library only):
   - a guide table row gives no default (nor says `required`),
   - a registered type has no table in its header (or a note that it reads no keywords), or
     the guide's table for it disagrees with the header's (keywords, units, defaults),
-  - a registered type is named nowhere in the guide.
+  - a registered type is named nowhere in the guide, or a guide table is for a type that
+    no model registers.
 """
 import os
 import re
@@ -280,7 +281,11 @@ def check(root):
     for t in tables:
         if t.owner:
             owned.setdefault(t.owner, []).append(t)
-    for kind, name, cls, path, text, at in registered_types(root):
+    types = registered_types(root)
+    for owner, copies in sorted(owned.items()):
+        if owner not in {name for _, name, *rest in types}:
+            problems.append(f"{copies[0].where}: a table for type `{owner}`, which no model registers")
+    for kind, name, cls, path, text, at in types:
         if path is None:
             problems.append(f"{kind} '{name}': class {cls} not found")
             continue
