@@ -102,7 +102,12 @@ def code_keywords(root):
 
 
 def split_row(line):
-    cells = line.strip().strip("|").split("|")
+    """The cells of a table row; `\|` is a bar inside a cell (markdown's escape)."""
+    cells = re.split(r"(?<!\\)\|", line.strip())
+    if cells and not cells[0].strip():
+        cells = cells[1:]
+    if cells and not cells[-1].strip():
+        cells = cells[:-1]
     return [c.strip() for c in cells]
 
 
