@@ -135,3 +135,26 @@ TEST(Expressions, aValueThatIsNotFiniteIsRefusedNamingTheExpressionAndThePlace)
     const std::string e = refusal("(\"sqrt(x - 1)\" 0)");
     EXPECT_TRUE(contains(e, "constant/bodies:6: expression \"sqrt(x - 1)\" is nan at (")) << e;
 }
+
+#if GPIC_WITH_3D
+TEST(Expressions, aThreeDimensionalBodyTakesItsVelocityAsAFieldOfXYZ)
+{
+    const Dictionary grid = Dictionary::parse(
+        "origin (0 0 0); cellSize 0.1; nCells (4 4 4);\n"
+        "boundaries { left { type fixed; } right { type fixed; } bottom { type fixed; } top { type fixed; }"
+        " back { type fixed; } front { type fixed; } }\n",
+        "constant/grid");
+    const Dictionary materials =
+        Dictionary::parse("m { type linearElastic; rho 1000; E 1e6; nu 0.3; }\n", "constant/materials");
+    const Dictionary bodies = Dictionary::parse(
+        "cube { material m; particlesPerCell 2; shape { type box; min (0.1 0.1 0.1); max (0.3 0.3 0.3); }\n"
+        "       velocity (\"z\" 0 \"x - y\"); }\n",
+        "constant/bodies");
+    const auto filled = fillBodies<3>(bodies, Grid<3>(grid), readMaterials<3>(materials), Space<3>::Vector(0, 0, -9.81));
+    ASSERT_EQ(filled.particles.size(), 64u);
+    for (std::size_t q = 0; q < filled.particles.size(); ++q) {
+        const auto& x = filled.particles.x[q];
+        EXPECT_EQ(filled.particles.v[q], Space<3>::Vector(x.z(), 0, x.x() - x.y()));
+    }
+}
+#endif
