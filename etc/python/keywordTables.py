@@ -142,6 +142,7 @@ class Table:
         self.header = header
         self.rows = []              # (keywords, cells, line)
         self.owner = None           # the type of a model's table
+        self.notes = []             # a header table's footnotes: "// (*) ..." lines after it
 
     def default_column(self):
         for i, h in enumerate(self.header):
@@ -202,6 +203,10 @@ def header_table(text, path, start):
     table = Table(f"{path}:{text.count(chr(10), 0, start) + 1}", split_row(lines[0][2:]))
     for k, line in enumerate(lines[1:]):
         if not line.startswith("// |"):
+            for note in lines[k + 1:]:
+                if not re.match(r"^// \(\S+\) ", note):
+                    break
+                table.notes.append(note[3:].strip())
             break
         cells = split_row(line[2:])
         if not cells[0] and table.rows:  # a continuation line: its cells go on the row above
@@ -341,20 +346,21 @@ def header(root, out):
         for keys, cells, _ in table.rows:
             lines.append([cells[i] if i is not None and i < len(cells) else "" for i in order])
         titles = [table.header[i] for i in order]
-        rows.append((kind, name, path, titles, lines))
+        rows.append((kind, name, path, titles, lines, table.notes))
     with open(out + ".tmp", "w", encoding="utf-8") as f:
         f.write("// Written by etc/python/keywordTables.py from the models' headers: do not edit.\n")
         f.write("#pragma once\n#include <vector>\n\nnamespace gpic {\n\n")
         f.write("struct KeywordTable {\n    const char* kind;\n    const char* type;\n    const char* header;\n"
                 "    std::vector<const char*> titles;             //- keyword, meaning, units, default (or valid / default)\n"
-                "    std::vector<std::vector<const char*>> rows;\n};\n\n")
+                "    std::vector<std::vector<const char*>> rows;\n"
+                "    std::vector<const char*> notes;              //- footnotes, e.g. \"(*) ...\"\n};\n\n")
         f.write("inline const std::vector<KeywordTable>& keywordTables()\n{\n    static const std::vector<KeywordTable> tables{\n")
-        for kind, name, path, head, lines in rows:
+        for kind, name, path, head, lines, notes in rows:
             f.write(f"        {{{cpp_string(kind)}, {cpp_string(name)}, {cpp_string(path)}, "
                     f"{{{', '.join(cpp_string(c) for c in head)}}}, {{\n")
             for cells in lines:
                 f.write("            {" + ", ".join(cpp_string(c) for c in cells) + "},\n")
-            f.write("        }},\n")
+            f.write("        }, {" + ", ".join(cpp_string(n) for n in notes) + "}},\n")
         f.write("    };\n    return tables;\n}\n\n} // namespace gpic\n")
     # Only a changed table rebuilds picToC.
     old = open(out, encoding="utf-8").read() if os.path.exists(out) else None

@@ -1,6 +1,6 @@
 #!/bin/bash
 # picToC -keywords TYPE prints the keyword table of the type's header, compiled in at build
-# time: every row of mohrCoulomb's and of the polygon shape's, "no keywords of its own" for a
+# time: every row of mohrCoulomb's and its footnote, the polygon shape's row, "no keywords of its own" for a
 # type without, every registered type answers; an unknown type is refused in one line naming
 # the valid types, exit 1. The lists without -keywords and -help are as before.
 # Usage: picToCKeywords.sh <source dir> <binary dir>
@@ -12,6 +12,7 @@ for key in rho "E, nu" "K, G" phi psi c sigmaT phiTable psiTable cTable sigmaTTa
     row=$(grep -E "^// \| $key +\|" "$source_dir/libmaterials/mohrCoulomb/MohrCoulomb.H" | awk -F'|' '{gsub(/^ +| +$/, "", $5); print $5}')
     echo "$out" | grep -qE "^  $key +.* $(printf '%s' "$row" | sed 's/[][()*.^$/]/\\&/g')\$" || fail "mohrCoulomb: no row '$key ... $row' in: $out"
 done
+echo "$out" | grep -q '^  (\*) with phi = 0 there is no tension cutoff unless sigmaT is given\.$' || fail "mohrCoulomb's footnote: $out"
 picToC -keywords polygon | grep -qE '^  points +\(\(x y\) \.\.\.\), at least 3' || fail "polygon: $(picToC -keywords polygon)"
 [ "$(picToC -keywords USL | tail -1)" = "  no keywords of its own" ] || fail "USL: $(picToC -keywords USL)"
 [ "$(picToC -keywords fixed | grep -c '^[a-zA-Z]')" = 2 ] || fail "fixed: a boundary condition and a driver expected: $(picToC -keywords fixed)"

@@ -101,6 +101,7 @@ void printKeywords(const std::string& type)
         };
         line(titles);
         for (const auto& row : table.rows) line(row);
+        for (const char* note : table.notes) std::cout << "  " << note << '\n';
     }
     if (found) return;
     std::string list;
