@@ -1,8 +1,8 @@
 #!/bin/bash
 # picToC -keywords TYPE prints the keyword table of the type's header, compiled in at build
-# time: every row of mohrCoulomb's and its footnote, the polygon shape's row, "no keywords of its own" for a
-# type without, every registered type answers; an unknown type is refused in one line naming
-# the valid types, exit 1. The lists without -keywords and -help are as before.
+# time: every row of mohrCoulomb's and its footnote, the polygon shape's row, "no keywords of
+# its own" for a type without, every registered type answers; an unknown type is refused in
+# one line naming the valid types, exit 1. The lists without -keywords and -help are as before.
 # Usage: picToCKeywords.sh <source dir> <binary dir>
 . "$(dirname "$0")/scratchRun.sh" "$@"
 fail() { echo "$*"; exit 1; }
