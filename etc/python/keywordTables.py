@@ -7,7 +7,7 @@ the source `picToC -keywords TYPE` prints:
     // | keyword | meaning | units | default |
     // | phi     | friction angle | deg | required, [0, 90) |
 
-Two uses (python3, standard library only):
+Its commands (python3, standard library only):
 
     keywordTables.py header SOURCE_DIR OUT.H   write the tables as C++ for picToC (the build)
     keywordTables.py check SOURCE_DIR          the drift test (CTest keywordDrift)
@@ -102,7 +102,7 @@ def code_keywords(root):
 
 
 def split_row(line):
-    """The cells of a table row; `\|` is a bar inside a cell (markdown's escape)."""
+    r"""The cells of a table row; `\|` is a bar inside a cell (markdown's escape)."""
     cells = re.split(r"(?<!\\)\|", line.strip())
     if cells and not cells[0].strip():
         cells = cells[1:]
