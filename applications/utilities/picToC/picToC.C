@@ -69,6 +69,7 @@ template <template <int> class Kind> void listDims()
     }
     std::cout << Kind<2>::kindName << ": " << (line.empty() ? "(none)" : line) << '\n';
 }
+
 //- The keyword tables of `type` (one per kind that has a type of that name), columns aligned.
 void printKeywords(const std::string& type)
 {
