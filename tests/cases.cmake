@@ -25,6 +25,22 @@ add_test(NAME fuzzDictionary
          COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/scripts/fuzzDictionary.sh ${PROJECT_SOURCE_DIR} 20000)
 set_tests_properties(fuzzDictionary PROPERTIES TIMEOUT 600 LABELS integration)
 
+# Code, headers and user guide agree on the keywords (etc/python/keywordTables.py): every
+# keyword the code reads is in a table of doc/userGuide with its default, every keyword
+# there is read, and each registered type's header table is the guide's table for it.
+add_test(NAME keywordDrift COMMAND python3 ${PROJECT_SOURCE_DIR}/etc/python/keywordTables.py check ${PROJECT_SOURCE_DIR})
+set_tests_properties(keywordDrift PROPERTIES TIMEOUT 60 ENVIRONMENT "PYTHONDONTWRITEBYTECODE=1")
+# picToC -keywords TYPE prints those tables; an unknown type is one line (tests/scripts/picToCKeywords.sh).
+add_test(NAME picToCKeywords
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/scripts/picToCKeywords.sh ${PROJECT_SOURCE_DIR} ${PROJECT_BINARY_DIR})
+set_tests_properties(picToCKeywords PROPERTIES TIMEOUT 120 ENVIRONMENT "PYTHONDONTWRITEBYTECODE=1")
+
+# Every script a user runs answers -help, --help and -h alike, from a scratch copy
+# (tests/scripts/scriptsHelp.sh): the Allrun, Allclean, Allvalidate, bench/run, picStudy.
+add_test(NAME scriptsHelp
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/scripts/scriptsHelp.sh ${PROJECT_SOURCE_DIR} ${PROJECT_BINARY_DIR})
+set_tests_properties(scriptsHelp PROPERTIES TIMEOUT 120)
+
 # The ParaView scripts (etc/paraview, each tutorial's paraviewParticles.py) at least compile:
 # ParaView itself cannot be installed beside the build's VTK (doc/userGuide/output.md,
 # "Output for ParaView").

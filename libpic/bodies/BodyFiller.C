@@ -1,6 +1,7 @@
 #include "bodies/BodyFiller.H"
 
 #include "bodies/Shape.H"
+#include "bodies/VectorField.H"
 #include "core/error.H"
 #include "dictionary/Dictionary.H"
 
@@ -204,7 +205,7 @@ FilledBodies<D> fillBodies(const Dictionary& bodiesDict, const Grid<D>& grid,
         }
         const int n = body.getChecked<int>("particlesPerCell", [](const int& k) { return k >= 1 && k <= 10; },
                                            "1 <= particlesPerCell <= 10");
-        const Vector v0 = body.getOrDefault<Vector>("velocity", Vector::Zero());
+        const auto v0 = VectorField<D>(body, "velocity", Vector::Zero());
         Vector amplitude = Vector::Zero(), wavenumber = Vector::Zero();
         if (const Dictionary* mode = body.subDictPtr("modeShape")) {
             amplitude = mode->get<Vector>("amplitude");
@@ -223,7 +224,7 @@ FilledBodies<D> fillBodies(const Dictionary& bodiesDict, const Grid<D>& grid,
             const double V = grid.axisymmetric() ? volume * x.x() : volume;
             const std::size_t q = out.particles.add(x, materials[mat]->rho() * V, V, half, bodyId, mat);
             const double phase = wavenumber.dot(x - grid.origin());
-            out.particles.v[q] = v0 + amplitude * std::sin(phase);
+            out.particles.v[q] = v0.at(x) + amplitude * std::sin(phase);
             out.particles.sigma[q] = stress.at(x);
             ++added;
         };

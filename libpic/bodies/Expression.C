@@ -2,25 +2,111 @@
 
 #include "core/error.H"
 
+#include <muParser.h>
+
+#include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <cstdlib>
+#include <mutex>
 
 namespace gpic {
 
 namespace {
 constexpr double pi = 3.14159265358979323846;
+
+// muparser's abs keeps the sign of -0; std::abs, as before, does not.
+double absolute(double v) { return std::abs(v); }
+
+//- Nesting bound: muparser itself would take any depth, but such input is a mistake.
+constexpr int maxDepth = 200;
+} // namespace
+
+struct Expression::Engine {
+    mu::Parser parser;
+    double t = 0, x = 0, y = 0, z = 0;
+    //- muparser evaluates with buffers of its own: one evaluation at a time (the threads of a
+    //  step may ask a driver for its velocity together).
+    std::mutex mutex;
+};
+
+std::string Expression::validNames(Variables variables)
+{
+    const char* const names = variables == Variables::time    ? "t"
+                              : variables == Variables::plane ? "x, y"
+                                                              : "x, y, z";
+    return std::string(names) + ", pi, sin, cos, exp, sqrt, abs, tan, asin, acos, atan, sinh, cosh, tanh, "
+                                "log, ln, log10, log2, sign, rint, min, max, sum, avg";
 }
 
-const char* Expression::validNames() { return "t, pi, sin, cos, exp, sqrt, abs"; }
-
-Expression::Expression(const std::string& text, const std::string& file, int line)
-    : text_(text), file_(file), line_(line)
+Expression::Expression(const std::string& text, const std::string& file, int line, Variables variables)
+    : text_(text), file_(file), line_(line), variables_(variables), engine_(std::make_unique<Engine>())
 {
-    root_ = parseSum();
-    skipBlanks();
-    if (pos_ < text_.size()) fail(std::string("unexpected '") + text_[pos_] + "'");
-    if (root_ < 0) fail("empty expression");
+    int depth = 0, deepest = 0;
+    for (std::size_t i = 0; i < text_.size(); ++i) {
+        depth += text_[i] == '(' ? 1 : text_[i] == ')' ? -1 : 0;
+        deepest = std::max(deepest, depth);
+        if (deepest > maxDepth) fail("nesting deeper than " + std::to_string(maxDepth) + " levels", static_cast<int>(i));
+    }
+    // muparser's `=` assigns to a variable: in a dictionary it can only be a mistake.
+    for (std::size_t i = 0; i < text_.size(); ++i)
+        if (text_[i] == '=' && (i == 0 || std::string("=<>!").find(text_[i - 1]) == std::string::npos) &&
+            (i + 1 == text_.size() || text_[i + 1] != '='))
+            fail("'=' assigns, which an expression may not (a comparison is ==)", static_cast<int>(i));
+    mu::Parser& p = engine_->parser;
+    // As written, in the order written: the optimizer would fold 0.1*t/3 into t*(0.1/3).
+    p.EnableOptimizer(false);
+    p.DefineConst("pi", pi);
+    p.DefineFun("abs", absolute);
+    if (variables == Variables::time) {
+        p.DefineVar("t", &engine_->t);
+    } else {
+        p.DefineVar("x", &engine_->x);
+        p.DefineVar("y", &engine_->y);
+        if (variables == Variables::space) p.DefineVar("z", &engine_->z);
+    }
+    try {
+        p.SetExpr(text_);
+        p.Eval();  // muparser parses on the first evaluation: the mistakes show now
+        usesTime_ = p.GetUsedVar().count("t") > 0;
+    } catch (const mu::Parser::exception_type& e) {
+        const std::string token = e.GetToken();
+        const int position = std::max(0, static_cast<int>(e.GetPos()));
+        switch (e.GetCode()) {
+        case mu::ecUNASSIGNABLE_TOKEN: {
+            const auto& functions = p.GetFunDef();
+            if (functions.count(token)) fail("'" + token + "' needs an argument in ( )", position);
+            fail("unknown name '" + token + "'", position);
+        }
+        case mu::ecEMPTY_EXPRESSION: fail("empty expression", 0);
+        case mu::ecUNEXPECTED_EOF: fail("unexpected end", static_cast<int>(text_.size()));
+        case mu::ecMISSING_PARENS: fail("missing ')'", position);
+        default: {
+            // muparser's own words, less its "at position N" (the message gives the character).
+            std::string what = e.GetMsg();
+            for (const char* tail : {" found at position", " at expression position", " at position"}) {
+                const auto at = what.find(tail);
+                if (at != std::string::npos) what.erase(at);
+            }
+            while (!what.empty() && (what.back() == '.' || what.back() == ' ')) what.pop_back();
+            if (!what.empty()) what[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(what[0])));
+            fail(what, position);
+        }
+        }
+    }
+}
+
+Expression::Expression(Expression&&) noexcept = default;
+Expression& Expression::operator=(Expression&&) noexcept = default;
+Expression::~Expression() = default;
+
+double Expression::at(double t, double x, double y, double z) const
+{
+    std::lock_guard<std::mutex> lock(engine_->mutex);
+    engine_->t = t;
+    engine_->x = x;
+    engine_->y = y;
+    engine_->z = z;
+    return engine_->parser.Eval();
 }
 
 std::string Expression::location() const
@@ -28,154 +114,11 @@ std::string Expression::location() const
     return line_ > 0 ? file_ + ":" + std::to_string(line_) : file_;
 }
 
-void Expression::fail(const std::string& what) const
+void Expression::fail(const std::string& what, int position) const
 {
     throw InputError(file_, line_,
-                     "expression \"" + text_ + "\": " + what + " at character " +
-                         std::to_string(pos_ + 1) + "; valid names: " + validNames() +
-                         "; operators + - * / ^ and ( )");
-}
-
-int Expression::add(Op op, int a, int b, double value)
-{
-    nodes_.push_back(Node{op, value, a, b});
-    return static_cast<int>(nodes_.size()) - 1;
-}
-
-void Expression::skipBlanks()
-{
-    while (pos_ < text_.size() && std::isspace(static_cast<unsigned char>(text_[pos_]))) ++pos_;
-}
-
-// sum := product (('+' | '-') product)*
-int Expression::parseSum()
-{
-    int left = parseProduct();
-    for (;;) {
-        skipBlanks();
-        if (pos_ >= text_.size() || (text_[pos_] != '+' && text_[pos_] != '-')) return left;
-        const Op op = text_[pos_++] == '+' ? Op::add : Op::subtract;
-        left = add(op, left, parseProduct());
-    }
-}
-
-// product := unary (('*' | '/') unary)*
-int Expression::parseProduct()
-{
-    int left = parseUnary();
-    for (;;) {
-        skipBlanks();
-        if (pos_ >= text_.size() || (text_[pos_] != '*' && text_[pos_] != '/')) return left;
-        const Op op = text_[pos_++] == '*' ? Op::multiply : Op::divide;
-        left = add(op, left, parseUnary());
-    }
-}
-
-// unary := ('+' | '-') unary | power      (so -t^2 = -(t^2))
-int Expression::parseUnary()
-{
-    // Every nesting passes here: a bound keeps absurd input from exhausting the stack.
-    struct Depth {
-        int& d;
-        explicit Depth(int& depth) : d(++depth) {}
-        ~Depth() { --d; }
-    } depth(depth_);
-    if (depth_ > 200) fail("nesting deeper than 200 levels");
-    skipBlanks();
-    if (pos_ < text_.size() && (text_[pos_] == '-' || text_[pos_] == '+')) {
-        const bool minus = text_[pos_++] == '-';
-        const int operand = parseUnary();
-        return minus ? add(Op::negate, operand) : operand;
-    }
-    return parsePower();
-}
-
-// power := primary ('^' unary)?          (right-associative: 2^3^2 = 2^9)
-int Expression::parsePower()
-{
-    const int base = parsePrimary();
-    skipBlanks();
-    if (pos_ < text_.size() && text_[pos_] == '^') {
-        ++pos_;
-        return add(Op::power, base, parseUnary());
-    }
-    return base;
-}
-
-// primary := number | name | name '(' sum ')' | '(' sum ')'
-int Expression::parsePrimary()
-{
-    skipBlanks();
-    if (pos_ >= text_.size()) fail("unexpected end");
-    const char c = text_[pos_];
-    if (std::isdigit(static_cast<unsigned char>(c)) || c == '.') {
-        const char* begin = text_.c_str() + pos_;
-        char* end = nullptr;
-        const double value = std::strtod(begin, &end);
-        if (end == begin) fail("bad number");
-        pos_ += static_cast<std::size_t>(end - begin);
-        return add(Op::number, -1, -1, value);
-    }
-    if (c == '(') {
-        ++pos_;
-        const int inner = parseSum();
-        skipBlanks();
-        if (pos_ >= text_.size() || text_[pos_] != ')') fail("missing ')'");
-        ++pos_;
-        return inner;
-    }
-    if (std::isalpha(static_cast<unsigned char>(c)) || c == '_') {
-        const std::size_t start = pos_;
-        while (pos_ < text_.size() &&
-               (std::isalnum(static_cast<unsigned char>(text_[pos_])) || text_[pos_] == '_'))
-            ++pos_;
-        const std::string name = text_.substr(start, pos_ - start);
-        if (name == "t") {
-            usesTime_ = true;
-            return add(Op::time);
-        }
-        if (name == "pi") return add(Op::number, -1, -1, pi);
-        Op op;
-        if (name == "sin") op = Op::sin;
-        else if (name == "cos") op = Op::cos;
-        else if (name == "exp") op = Op::exp;
-        else if (name == "sqrt") op = Op::sqrt;
-        else if (name == "abs") op = Op::abs;
-        else {
-            pos_ = start;
-            fail("unknown name '" + name + "'");
-        }
-        skipBlanks();
-        if (pos_ >= text_.size() || text_[pos_] != '(') fail("'" + name + "' needs an argument in ( )");
-        ++pos_;
-        const int argument = parseSum();
-        skipBlanks();
-        if (pos_ >= text_.size() || text_[pos_] != ')') fail("missing ')'");
-        ++pos_;
-        return add(op, argument);
-    }
-    fail(std::string("unexpected '") + c + "'");
-}
-
-double Expression::evaluate(int n, double t) const
-{
-    const Node& node = nodes_[static_cast<std::size_t>(n)];
-    switch (node.op) {
-    case Op::number: return node.value;
-    case Op::time: return t;
-    case Op::add: return evaluate(node.a, t) + evaluate(node.b, t);
-    case Op::subtract: return evaluate(node.a, t) - evaluate(node.b, t);
-    case Op::multiply: return evaluate(node.a, t) * evaluate(node.b, t);
-    case Op::divide: return evaluate(node.a, t) / evaluate(node.b, t);
-    case Op::power: return std::pow(evaluate(node.a, t), evaluate(node.b, t));
-    case Op::negate: return -evaluate(node.a, t);
-    case Op::sin: return std::sin(evaluate(node.a, t));
-    case Op::cos: return std::cos(evaluate(node.a, t));
-    case Op::exp: return std::exp(evaluate(node.a, t));
-    case Op::sqrt: return std::sqrt(evaluate(node.a, t));
-    case Op::abs: return std::abs(evaluate(node.a, t));
-    }
-    return 0.0;
+                     "expression \"" + text_ + "\": " + what + " at character " + std::to_string(position + 1) +
+                         "; valid names: " + validNames(variables_) + "; operators + - * / ^ and ( )");
 }
 
 } // namespace gpic

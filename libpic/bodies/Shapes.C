@@ -9,6 +9,9 @@
 
 namespace gpic {
 
+// | keyword | meaning             | units | default |
+// | min     | lower-left corner   | m     | required |
+// | max     | upper-right corner  | m     | required |
 class RectangleShape : public Shape<2> {
 public:
     explicit RectangleShape(const Dictionary& d) : min_(d.get<Vector2>("min")), max_(d.get<Vector2>("max"))
@@ -25,6 +28,9 @@ private:
     Vector2 min_, max_;
 };
 
+// | keyword | meaning | units | default |
+// | centre  | centre  | m     | required |
+// | radius  | radius  | m     | required, > 0 |
 class CircleShape : public Shape<2> {
 public:
     explicit CircleShape(const Dictionary& d)
@@ -44,6 +50,12 @@ private:
 
 //- The ring between two radii, or a sector of it (angles in degrees from the x1 axis,
 //  counter-clockwise from startAngle to endAngle): a pipe, a dome, a thick sphere's section.
+// | keyword     | meaning                        | units | default |
+// | centre      | centre                         | m     | required |
+// | innerRadius | inner radius                   | m     | 0 |
+// | outerRadius | outer radius                   | m     | required, > innerRadius |
+// | startAngle  | first angle, from the x1 axis  | deg   | 0 |
+// | endAngle    | last angle                     | deg   | startAngle + 360 |
 class AnnulusShape : public Shape<2> {
 public:
     explicit AnnulusShape(const Dictionary& d)

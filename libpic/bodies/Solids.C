@@ -11,6 +11,9 @@ namespace gpic {
 
 using Vector3 = Space<3>::Vector;
 
+// | keyword | meaning                  | units | default |
+// | min     | corner of least x, y, z  | m     | required |
+// | max     | corner of largest x, y, z | m    | required |
 class BoxShape : public Shape<3> {
 public:
     explicit BoxShape(const Dictionary& d) : min_(d.get<Vector3>("min")), max_(d.get<Vector3>("max"))
@@ -27,6 +30,9 @@ private:
     Vector3 min_, max_;
 };
 
+// | keyword | meaning | units | default |
+// | centre  | centre  | m     | required |
+// | radius  | radius  | m     | required, > 0 |
 class SphereShape : public Shape<3> {
 public:
     explicit SphereShape(const Dictionary& d)
@@ -46,6 +52,10 @@ private:
 
 //- The solid cylinder of radius `radius` about the segment point1 - point2 (OpenFOAM's
 //  cylinderToCell names the same keywords), flat at both ends.
+// | keyword | meaning                    | units | default |
+// | point1  | one end of the axis        | m     | required |
+// | point2  | the other end              | m     | required |
+// | radius  | radius                     | m     | required, > 0 |
 class CylinderShape : public Shape<3> {
 public:
     explicit CylinderShape(const Dictionary& d)
@@ -77,6 +87,10 @@ private:
 
 //- A simple polygon in (x1, x2), extruded from x3 = zMin to zMax: a wall, a strip footing
 //  or a plane-strain body given a finite width.
+// | keyword | meaning                                   | units | default |
+// | points  | the section ((x y) ...) in (x1, x2), at least 3 | m | required |
+// | zMin    | where it starts along x3                  | m     | required |
+// | zMax    | where it ends along x3                    | m     | required, > zMin |
 class ExtrudedPolygonShape : public Shape<3> {
 public:
     explicit ExtrudedPolygonShape(const Dictionary& d)
@@ -100,6 +114,11 @@ private:
 };
 
 //- The solid a closed STL surface bounds (bodies/TriSurface.H for the keywords).
+// | keyword     | meaning                                               | units | default |
+// | file        | the STL file (ASCII or binary), relative to the dictionary's file | - | required |
+// | scale       | the file's unit in metres (0.001 for mm)              | m     | 1 |
+// | rotation    | { axis (x y z); angle a; }: turned about the origin, after scale | -, deg | none |
+// | translation | then moved by                                         | m     | (0 0 0) |
 class TriSurfaceShape : public Shape<3> {
 public:
     explicit TriSurfaceShape(const Dictionary& d) : surface_(TriSurface::read(d)), box_(surface_.bounds()) {}
