@@ -315,7 +315,10 @@ def check(root):
         for k, (units, deflt) in mine.items():
             if not default_ok(table.header[table.default_column()], deflt):
                 problems.append(f"{table.where}: {kind} '{name}', `{k}` has no default (write it, or `required`)")
-        copies = [g for g in owned.get(name, []) if set(g.by_keyword()) & set(mine)] or owned.get(name, [])
+        # A name with a table per dimension (toolWear): the guide's table with the same
+        # keywords, else the one sharing most.
+        copies = sorted(owned.get(name, []), key=lambda g: (set(g.by_keyword()) != set(mine),
+                                                            -len(set(g.by_keyword()) & set(mine))))
         if not copies:
             problems.append(f"{table.where}: {kind} '{name}' has no table '| `{name}` keyword | meaning | units | default |' in {GUIDE}")
             continue
