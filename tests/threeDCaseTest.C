@@ -435,7 +435,9 @@ TEST(ThreeDCase, anOpenedDiscInTheFloorLetsOnlyTheMaterialAboveItOut)
                 "writeControl adjustableRunTime;\nwriteInterval 10;\n"
                 "stages { settle { type run; damping 0.8; openings { bottom closed; } until { duration 0.1; } }\n"
                 "         discharge { type openGate; side bottom; until { duration 0.15; } } }\n"
-                "functions { silo { type massFlow; writeInterval 20; } }\n";
+                "functions { silo { type massFlow; writeInterval 20; }\n"
+                "            core { type massFlow; writeInterval 20; region { type cylinder; point1 (0.08 0 0.08); "
+                "point2 (0.08 0.2 0.08); radius 0.03; } } }\n";
     write(scratch.path(), s);
     std::size_t filled = 0;
     double totalMass = 0;
@@ -471,6 +473,17 @@ TEST(ThreeDCase, anOpenedDiscInTheFloorLetsOnlyTheMaterialAboveItOut)
         EXPECT_NEAR(rows.at("mass")[r] + rows.at("out")[r], 2000.0 * 0.16 * 0.12 * 0.16, 1e-9);
     }
     EXPECT_TRUE(opened) << "kilograms through the disc once the gate opened";
+
+    // A region of any shape: the cylinder above the disc holds, at the start, the particles
+    // whose centres lie within 0.03 m of its axis (2 g each), and never more than the silo.
+    std::size_t inCore = 0;
+    for (int i = 0; i < 16; ++i)
+        for (int k = 0; k < 16; ++k)
+            if (std::hypot((i + 0.5) * 0.01 - 0.08, (k + 0.5) * 0.01 - 0.08) <= 0.03) inCore += 12;
+    const auto core = readColumns(scratch.path() / "postProcessing/core/0/massFlow.dat");
+    ASSERT_EQ(core.at("time").size(), rows.at("time").size());
+    EXPECT_NEAR(core.at("mass").front(), 2000.0 * 1e-6 * static_cast<double>(inCore), 1e-12);
+    for (std::size_t r = 0; r < core.at("time").size(); ++r) EXPECT_LT(core.at("mass")[r], rows.at("mass")[r]);
 }
 
 namespace {

@@ -2,6 +2,7 @@
 
 #include "dictionary/Dictionary.H"
 #include "dictionary/ExactNumber.H"
+#include "bodies/Shape.H"
 
 #include <algorithm>
 
@@ -14,7 +15,9 @@ MassFlow<D>::MassFlow(const Dictionary& dict, const RunContext& context)
     : FunctionObject<D>(dict, context),
       givenFactor_(readFactor(dict))
 {
-    if (const Dictionary* region = dict.subDictPtr("region")) {
+    if (const Dictionary* region = dict.subDictPtr("region"); region && region->found("type")) {
+        shape_ = Shape<D>::New(*region);  // any shape of constant/bodies: a cylinder, a sphere, an STL
+    } else if (region) {
         const Vector lo = region->get<Vector>("min"), hi = region->get<Vector>("max");
         if (!(hi.array() > lo.array()).all())
             region->fail("max", "keyword 'max' in dictionary " + region->name() + ": the region needs max > min in " +
@@ -26,6 +29,7 @@ MassFlow<D>::MassFlow(const Dictionary& dict, const RunContext& context)
 
 template <int D> bool MassFlow<D>::insideRegion(const Vector& x) const
 {
+    if (shape_) return shape_->inside(x);
     return !((x.array() < region_->first.array()).any() || (x.array() > region_->second.array()).any());
 }
 
@@ -38,7 +42,7 @@ double MassFlow<D>::massInRegion(const MpmSolver<D>& solver) const
         const bool counted = bodies_.empty() ? solver.rigidBody(p.body[q]) == nullptr
                                              : std::find(bodies_.begin(), bodies_.end(), p.body[q]) != bodies_.end();
         if (!counted) continue;
-        if (region_ && !insideRegion(p.x[q])) continue;
+        if ((region_ || shape_) && !insideRegion(p.x[q])) continue;
         mass += p.m[q];
     }
     return factor_ * mass;
