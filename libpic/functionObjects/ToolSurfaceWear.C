@@ -2,6 +2,7 @@
 
 #if GPIC_WITH_3D
 #include "bodies/RigidPose.H"
+#include "functionObjects/ArchardWear.H"
 #include "contact/ContactPass.H"
 #include "core/error.H"
 #include "dictionary/Dictionary.H"
@@ -17,15 +18,10 @@ namespace gpic {
 
 GPIC_REGISTER(FunctionObject<3>, ToolSurfaceWear, "toolWear")
 
-namespace {
-const auto positive = [](const double& v) { return v > 0; };
-}
-
 ToolSurfaceWear::ToolSurfaceWear(const Dictionary& dict, const RunContext& context)
     : FunctionObject<3>(dict, context),
       bodyName_(dict.getWord("body", context.bodyNames)),
-      wearPerWork_(dict.getChecked<double>("wearCoefficient", positive, "wearCoefficient > 0") /
-                   dict.getChecked<double>("hardness", positive, "hardness > 0 (Pa)")),
+      wearPerWork_(archardWearPerWork(dict)),
       file_(dict.fileName()),
       line_(dict.lineOf("body"))
 {
@@ -40,13 +36,7 @@ ToolSurfaceWear::ToolSurfaceWear(const Dictionary& dict, const RunContext& conte
 void ToolSurfaceWear::start(const MpmSolver<3>& solver, double time)
 {
     const std::string what = "toolWear " + name() + ": ";
-    if (!solver.rigidBody(body_))
-        throw InputError(file_, line_, what + "'" + bodyName_ + "' is not a rigid body (constant/rigidBodies)");
-    if (!solver.contact())
-        throw InputError(file_, line_, what + "the material does not slide along '" + bodyName_ +
-                                           "' with one velocity field for all bodies: give the bodies their own "
-                                           "fields with a frictional law (constant/contactProperties: law "
-                                           "coulombFriction)");
+    checkWornTool(solver, body_, bodyName_, what, file_, line_);
     std::vector<bool> tool(context().bodyNames.size());
     tool[static_cast<std::size_t>(body_)] = true;
     tools_ = std::make_shared<const ToolSurfaces<3>>(context().caseDir, context().bodyNames, tool);
@@ -85,17 +75,9 @@ void ToolSurfaceWear::at(StepPoint, const MpmSolver<3>& solver)
         const Vector normal = surface_->facetNormal(facet);  // in the tool's frame
         const double Fn = -push.dot(normal);  // the material presses the tool inwards
         if (!(Fn > 0.0)) continue;
-        // The material's velocity at the node: its bodies' fields, by mass.
-        double m = 0;
-        Vector momentum = Vector::Zero();
-        for (int b = 0; b < contact->nBodies(); ++b) {
-            if (b == body_ || solver.rigidBody(b)) continue;
-            const BodyField<3>& f = contact->field(b);
-            m += f.mass[n];
-            momentum += f.mass[n] * f.velocity[n];
-        }
-        if (!(m > 0.0)) continue;
-        const Vector relative = pose.unturn(momentum / m - tool->velocity(tNew, x));
+        Vector material;
+        if (!materialVelocity(solver, *contact, n, material)) continue;
+        const Vector relative = pose.unturn(material - tool->velocity(tNew, x));
         const double slip = (relative - relative.dot(normal) * normal).norm();
         const double worn = wearPerWork_ * Fn * slip * dt;
         if (!(worn > 0.0)) continue;

@@ -1,5 +1,7 @@
 #include "functionObjects/ToolWear.H"
 
+#include "functionObjects/ArchardWear.H"
+
 #include "contact/ContactPass.H"
 #include "core/error.H"
 #include "dictionary/Dictionary.H"
@@ -21,8 +23,7 @@ const auto positive = [](const double& v) { return v > 0; };
 ToolWear::ToolWear(const Dictionary& dict, const RunContext& context)
     : FunctionObject<2>(dict, context),
       bodyName_(dict.getWord("body", context.bodyNames)),
-      wearPerWork_(dict.getChecked<double>("wearCoefficient", positive, "wearCoefficient > 0") /
-                   dict.getChecked<double>("hardness", positive, "hardness > 0 (Pa)")),
+      wearPerWork_(archardWearPerWork(dict)),
       resolution_(dict.found("resolution") ? dict.getChecked<double>("resolution", positive, "resolution > 0 (m)")
                                            : 0.0),
       file_(dict.fileName()),
@@ -64,14 +65,7 @@ void ToolWear::spread(std::vector<double>& bins, double length, double s, double
 
 void ToolWear::start(const MpmSolver<2>& solver, double time)
 {
-    const std::string what = "toolWear " + name() + ": ";
-    if (!solver.rigidBody(body_))
-        throw InputError(file_, line_, what + "'" + bodyName_ + "' is not a rigid body (constant/rigidBodies)");
-    if (!solver.contact())
-        throw InputError(file_, line_, what + "the material does not slide along '" + bodyName_ +
-                                           "' with one velocity field for all bodies: give the bodies their own "
-                                           "fields with a frictional law (constant/contactProperties: law "
-                                           "coulombFriction)");
+    checkWornTool(solver, body_, bodyName_, "toolWear " + name() + ": ", file_, line_);
     if (resolution_ == 0.0) resolution_ = solver.grid().cellSize().maxCoeff();
     axisymmetric_ = solver.grid().axisymmetric();
     for (auto& face : faces_) {
@@ -121,17 +115,9 @@ void ToolWear::at(StepPoint point, const MpmSolver<2>& solver)
             if (!s) continue;
             const double Fn = -F.dot(band.normal());  // the material presses the tool away from it
             if (!(Fn > 0.0)) continue;
-            // The material's velocity at the node: its bodies' fields, by mass.
-            double m = 0;
-            Vector2 momentum = Vector2::Zero();
-            for (int b = 0; b < contact->nBodies(); ++b) {
-                if (b == body_ || solver.rigidBody(b)) continue;
-                const BodyField<2>& f = contact->field(b);
-                m += f.mass[n];
-                momentum += f.mass[n] * f.velocity[n];
-            }
-            if (!(m > 0.0)) continue;
-            const double slip = std::abs((momentum / m - tool->velocity(tNew, x)).dot(band.tangent()));
+            Vector2 material;
+            if (!materialVelocity(solver, *contact, n, material)) continue;
+            const double slip = std::abs((material - tool->velocity(tNew, x)).dot(band.tangent()));
             spread(face.volume, band.length(), *s, width, wearPerWork_ * Fn * slip * dt);
         }
     }
