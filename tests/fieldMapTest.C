@@ -79,6 +79,10 @@ TEST(FieldMap, anUnknownArrayOrComponentListsTheValidChoices)
     r = runApplication("picFieldMap", dir, "-field stress:xx -range 1 0");
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_NE(r.err.find("-range"), std::string::npos) << r.err;
+    r = runApplication("picFieldMap", dir, "-field stress:xx -slice x3 0.01");  // a plane case is mapped whole
+    EXPECT_EQ(r.exitCode, 1);
+    ASSERT_EQ(r.errorLines.size(), 1u) << r.err;
+    EXPECT_NE(r.errorLines[0].find("-slice is for a 3D case"), std::string::npos) << r.err;
 }
 
 TEST(FreeSurface, theSurfaceOfASlopedFillFollowsItsTopWithinAParticle)

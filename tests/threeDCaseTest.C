@@ -26,6 +26,8 @@
 
 #include <Eigen/Geometry>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -600,4 +602,50 @@ TEST(ThreeDCase, moveToolEndsAtItsDisplacementAndExcavateDigsTheRegionFromTheTop
     }
     EXPECT_EQ(inRegion, 4u * 4 * 4) << "the region's particles below the cut stay";
     EXPECT_EQ(p.size(), 4u * 4 * 4 * 8 - 4u * 4 * 4) << "the cube less the dug particles (the plate sleeps in dig)";
+}
+
+TEST(ThreeDCase, picFieldMapDrawsTheParticlesASliceCuts)
+{
+    // An elastic block (0.1 x 0.1 x 0.0875 m, 25 mm cells, 2 x 2 x 2 particles a cell: layers
+    // 12.5 mm apart, half-size 6.25 mm, 8 x 8 x 7 particles) as picInit writes it: the plane
+    // x3 = 0.053 m cuts the layer at 0.05625 m alone (64 particles), which the map holds at
+    // their (x1, x2) with their x3; x2 = 0.03 cuts the layer at 0.03125 (56 particles at
+    // (x1, x3)); without -slice, the plane x3 through the particles' middle, the layer at
+    // 0.04375 m (64); a bad slice is one line.
+    ScratchDir scratch{"fieldMap3d"};
+    Scene s = plateOnCube();
+    s.bodies = "cube { material rubber; shape { type box; min (0 0 0); max (0.1 0.1 0.0875); } particlesPerCell 2; }\n";
+    write(scratch.path(), s);
+    initialiseCase(scratch.path().string());
+    const auto rowsOf = [&](const std::string& args, const std::string& stem) {
+        const AppResult r = runApplication("picFieldMap", scratch.path(), "-time 0 " + args);
+        EXPECT_EQ(r.exitCode, 0) << r.err;
+        std::ifstream in(scratch.path() / "postProcessing/picFieldMap/0" / (stem + ".csv"));
+        std::string line;
+        std::getline(in, line);
+        std::vector<std::array<double, 3>> rows;
+        for (std::array<double, 3> row{}; std::getline(in, line);) {
+            std::replace(line.begin(), line.end(), ',', ' ');
+            std::istringstream(line) >> row[0] >> row[1] >> row[2];
+            rows.push_back(row);
+        }
+        return rows;
+    };
+    const auto x3 = rowsOf("-field initialPosition:z -slice x3 0.053", "initialPosition_z");
+    ASSERT_EQ(x3.size(), 64u);
+    for (const auto& row : x3) {
+        EXPECT_NEAR(row[2], 0.05625, 1e-12);
+        const double layer = (row[0] - 0.00625) / 0.0125;  // x1 on the particles' lattice
+        EXPECT_NEAR(layer, std::round(layer), 1e-9) << row[0];
+    }
+    const auto x2 = rowsOf("-field initialPosition:y -slice x2 0.03", "initialPosition_y");
+    ASSERT_EQ(x2.size(), 56u);
+    for (const auto& row : x2) EXPECT_NEAR(row[2], 0.03125, 1e-12);
+    const auto middle = rowsOf("-field initialPosition:z", "initialPosition_z");
+    ASSERT_EQ(middle.size(), 64u);
+    for (const auto& row : middle) EXPECT_NEAR(row[2], 0.04375, 1e-12);
+    const AppResult bad = runApplication("picFieldMap", scratch.path(), "-time 0 -field mass -slice x4 0.05");
+    EXPECT_EQ(bad.exitCode, 1);
+    ASSERT_EQ(bad.errorLines.size(), 1u) << bad.err;
+    EXPECT_NE(bad.errorLines[0].find("valid axes: x1, x2, x3"), std::string::npos) << bad.err;
 }

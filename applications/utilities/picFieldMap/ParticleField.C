@@ -10,6 +10,7 @@
 #include <vtkNew.h>
 #include <vtkXMLPolyDataReader.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 
@@ -44,7 +45,7 @@ int componentIndex(const std::string& name, int n, const std::string& path, cons
 
 } // namespace
 
-ParticleField readParticleField(const std::string& vtpPath, const std::string& field)
+ParticleField readParticleField(const std::string& vtpPath, const std::string& field, const Slice* slice)
 {
     const vtkSmartPointer<vtkPolyData> data = detail::readXml<vtkXMLPolyDataReader>(vtpPath, "particles", "PolyData");
     if (!data->GetPoints()) throw InputError(vtpPath, 0, "cannot read particles: no points");
@@ -70,7 +71,13 @@ ParticleField readParticleField(const std::string& vtpPath, const std::string& f
     for (vtkIdType q = 0; q < count; ++q) {
         double p[3];
         data->GetPoint(q, p);
-        out.x.emplace_back(p[0], p[1]);
+        if (slice) {
+            const double reach = halfSize ? halfSize->GetComponent(q, slice->axis) : 0.0;
+            if (std::abs(p[slice->axis] - slice->position) > reach) continue;
+            out.x.emplace_back(p[slice->first()], p[slice->second()]);
+        } else {
+            out.x.emplace_back(p[0], p[1]);
+        }
         double v = 0;
         if (component >= 0) {
             v = array->GetComponent(q, component);
@@ -79,9 +86,23 @@ ParticleField readParticleField(const std::string& vtpPath, const std::string& f
             v = std::sqrt(v);
         }
         out.value.push_back(v);
-        out.halfWidth.push_back(halfSize ? halfSize->GetComponent(q, 0) : 0.0);
+        out.halfWidth.push_back(halfSize ? halfSize->GetComponent(q, slice ? slice->first() : 0) : 0.0);
     }
     return out;
+}
+
+double middleAlong(const std::string& vtpPath, int axis)
+{
+    const vtkSmartPointer<vtkPolyData> data = detail::readXml<vtkXMLPolyDataReader>(vtpPath, "particles", "PolyData");
+    if (!data->GetPoints() || data->GetNumberOfPoints() == 0) return 0.0;
+    double lo = 1e300, hi = -1e300;
+    for (vtkIdType q = 0; q < data->GetNumberOfPoints(); ++q) {
+        double p[3];
+        data->GetPoint(q, p);
+        lo = std::min(lo, p[axis]);
+        hi = std::max(hi, p[axis]);
+    }
+    return 0.5 * (lo + hi);
 }
 
 } // namespace gpic

@@ -9,8 +9,11 @@
 //     picFieldMap -field yieldState -allTimes
 //     picFieldMap -field stress:xy                       # a component (xx xy ... zz, x y z, 0..n-1, mag)
 //     picFieldMap -field initialPosition:y -bands 10     # coloured layers (seed figs. 6.9-6.11)
+//     picFieldMap -field epsPs -slice x3 0.05            # 3D: the particles the plane x3 = 0.05 m
+//                                                        # cuts (default: x3 through the middle)
 #include "applicationMain.H"
-#include "PlaneCaseOnly.H"
+#include "case/CaseFiles.H"
+#include "dictionary/Dictionary.H"
 
 #include "Gnuplot.H"
 #include "ParticleField.H"
@@ -19,6 +22,8 @@
 #include "io/TimeDirectories.H"
 
 #include <algorithm>
+#include <cmath>
+#include <optional>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -36,8 +41,11 @@ std::string fileStem(std::string field)
     return field;
 }
 
-void drawMap(const ParticleField& f, const fs::path& outDir, const po::variables_map& vm)
+void drawMap(const ParticleField& f, const fs::path& outDir, const po::variables_map& vm, const Slice* slice)
 {
+    // The map's axes: x1, x2, or in a slice of a 3D case its two in-plane axes.
+    const std::string a1 = slice ? "x" + std::to_string(slice->first() + 1) : "x1",
+                      a2 = slice ? "x" + std::to_string(slice->second() + 1) : "x2";
     fs::create_directories(outDir);
     const std::string stem = fileStem(f.name);
     const fs::path csv = outDir / (stem + ".csv");
@@ -45,15 +53,16 @@ void drawMap(const ParticleField& f, const fs::path& outDir, const po::variables
         std::ofstream out(csv);
         if (!out) throw InputError(csv.string(), 0, "cannot open for writing");
         out.precision(10);
-        out << "x1,x2," << f.name << '\n';
+        out << a1 << ',' << a2 << ',' << f.name << '\n';
         for (std::size_t q = 0; q < f.x.size(); ++q) out << f.x[q].x() << ',' << f.x[q].y() << ',' << f.value[q] << '\n';
     }
     const auto [lo, hi] = std::minmax_element(f.value.begin(), f.value.end());
     double mean = 0;
     for (double v : f.value) mean += v;
     mean /= std::max<std::size_t>(f.value.size(), 1);
-    std::printf("time %-10g %-20s min %-12.5g max %-12.5g mean %-12.5g (%zu particles) -> %s\n", f.time,
+    std::printf("time %-10g %-20s min %-12.5g max %-12.5g mean %-12.5g (%zu particles%s) -> %s\n", f.time,
                 f.name.c_str(), f.value.empty() ? 0.0 : *lo, f.value.empty() ? 0.0 : *hi, mean, f.value.size(),
+                slice ? (" in the slice x" + std::to_string(slice->axis + 1) + " = " + timeName(slice->position, 6)).c_str() : "",
                 csv.c_str());
 
     // Particles as filled squares of their own size: the map reads like the seed's figures.
@@ -70,8 +79,12 @@ void drawMap(const ParticleField& f, const fs::path& outDir, const po::variables
     const fs::path png = outDir / (stem + ".png");
     std::string script = "set terminal pngcairo size " + std::to_string(pxWidth) + "," + std::to_string(pxHeight) +
                          "\nset output " + gnuplotQuoted(png.string()) + "\nset size ratio -1\n" +
-                         "set xlabel 'x1 [m]'\nset ylabel 'x2 [m]'\nset title " +
-                         gnuplotQuoted(f.name + " at t = " + timeName(f.time, 6) + " s") + " noenhanced\n" +
+                         "set xlabel '" + a1 + " [m]'\nset ylabel '" + a2 + " [m]'\nset title " +
+                         gnuplotQuoted(f.name + " at t = " + timeName(f.time, 6) + " s" +
+                                       (slice ? " in the slice x" + std::to_string(slice->axis + 1) + " = " +
+                                                    timeName(slice->position, 6) + " m"
+                                              : "")) +
+                         " noenhanced\n" +
                          "set xrange [" + std::to_string(xmin - pad) + ":" + std::to_string(xmax + pad) + "]\n" +
                          "set yrange [" + std::to_string(ymin - pad) + ":" + std::to_string(ymax + pad) + "]\n" +
                          "set datafile separator ','\nset key off\n";
@@ -112,12 +125,34 @@ int main(int argc, char** argv)
     options.add_options()("field", po::value<std::string>()->required(),
                           "particle array, or array:component (xx xy yx yy zz, x y z, 0..n-1, mag)")(
         "range", po::value<std::vector<double>>()->multitoken(), "colour range: min max")(
-        "bands", po::value<int>(), "colour in N bands (coloured layers: -field initialPosition:y -bands 10)");
+        "bands", po::value<int>(), "colour in N bands (coloured layers: -field initialPosition:y -bands 10)")(
+        "slice", po::value<std::vector<std::string>>()->multitoken(),
+        "3D: the plane AXIS POSITION (x1, x2 or x3 and metres) whose particles are mapped; default x3 through the "
+        "middle of the particles");
     return applicationMain(
         argc, argv, "Map of a particle field at its positions: CSV and PNG per time directory.", options,
         [](const po::variables_map& vm) {
             const std::string caseDir = vm["case"].as<std::string>();
-            refuseThreeD(caseDir, "picFieldMap", "open its particles.vtp in ParaView and colour a Slice by the field");
+            const bool threeD = fs::exists(fs::path(caseDir) / "constant/grid") &&
+                                caseDimension(readCaseFile(caseDir, "constant/grid")) == 3;
+            std::optional<Slice> slice;
+            if (vm.count("slice")) {
+                const auto words = vm["slice"].as<std::vector<std::string>>();
+                if (!threeD) throw InputError("", 0, "-slice: a plane case is mapped whole; -slice is for a 3D case");
+                Slice s;
+                const std::vector<std::string> axes = {"x1", "x2", "x3"};
+                const auto axis = words.empty() ? axes.end() : std::find(axes.begin(), axes.end(), words[0]);
+                std::size_t used = 0;
+                try {
+                    if (words.size() == 2) s.position = std::stod(words[1], &used);
+                } catch (const std::exception&) {
+                    used = 0;
+                }
+                if (words.size() != 2 || axis == axes.end() || used != words[1].size() || !std::isfinite(s.position))
+                    throw InputError("", 0, "-slice: expected an axis and a position, e.g. -slice x3 0.05; valid axes: x1, x2, x3");
+                s.axis = static_cast<int>(axis - axes.begin());
+                slice = s;
+            }
             if (vm.count("bands") && vm["bands"].as<int>() < 2)
                 throw InputError("", 0, "-bands: expected a number of bands >= 2");
             if (vm.count("range")) {
@@ -128,9 +163,11 @@ int main(int argc, char** argv)
             const std::vector<std::string> times = selectedTimes(vm, caseDir);
             const fs::path out = fs::path(caseDir) / "postProcessing" / "picFieldMap";
             for (const auto& name : times) {
-                const ParticleField f =
-                    readParticleField((fs::path(caseDir) / name / "particles.vtp").string(), vm["field"].as<std::string>());
-                drawMap(f, out / name, vm);
+                const std::string vtp = (fs::path(caseDir) / name / "particles.vtp").string();
+                std::optional<Slice> at = slice;
+                if (threeD && !at) at = Slice{2, middleAlong(vtp, 2)};  // x3 through the particles' middle
+                const ParticleField f = readParticleField(vtp, vm["field"].as<std::string>(), at ? &*at : nullptr);
+                drawMap(f, out / name, vm, at ? &*at : nullptr);
             }
         });
 }
