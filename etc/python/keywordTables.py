@@ -61,7 +61,7 @@ STATE = {"stage", "index", "begun", "progress", "clock", "startStep",  # uniform
          "top", "removed", "band",                                       # excavate's progress
          "lastTime", "lastRemoved", "lastMass", "work",                  # functionObjects' state
          "removedMass",                                                  # uniform/time
-         "handle", "reference", "travel", "volume", "layers"}             # toolFill, toolWear, excavate
+         "handle", "reference", "travel", "last", "volume", "layers"}     # toolFill, toolWear, excavate
 # Kinds chosen by the scene itself, never by a keyword of a case file.
 INTERNAL_KINDS = {"gridCoupling"}
 # The guide pages whose keyword tables are checked.
