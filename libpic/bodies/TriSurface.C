@@ -274,9 +274,11 @@ std::vector<TriSurface::FacetPoint> TriSurface::facetsNear(const Vector& x, doub
     return near;
 }
 
-int TriSurface::facetPushedBy(const Vector& x, const Vector& push, double band, double reach) const
+int TriSurface::facetPushedBy(const Vector& x, const Vector& push, double band, double reach,
+                              double* nearestDistance) const
 {
     const FacetPoint near = nearest(x);
+    if (nearestDistance) *nearestDistance = near.distance;
     if (near.distance > reach) return -1;
     int facet = near.facet;
     double against = -push.dot(facetNormal(facet));

@@ -70,7 +70,8 @@ void ToolSurfaceWear::at(StepPoint, const MpmSolver<3>& solver)
         const Vector& F = grid.fContact[static_cast<std::size_t>(n)];
         if (F.isZero(0.0) || !(toolField.mass[n] > 0.0)) continue;
         const Vector x = grid.nodePosition(n), X = pose.unplace(x), push = pose.unturn(F);
-        const int facet = surface_->facetPushedBy(X, push, 0.5 * h, reach);
+        double distance = 0;  // to the nearest facet
+        const int facet = surface_->facetPushedBy(X, push, 0.5 * h, reach, &distance);
         if (facet < 0) continue;
         const Vector normal = surface_->facetNormal(facet);  // in the tool's frame
         const double Fn = -push.dot(normal);  // the material presses the tool inwards
@@ -82,7 +83,6 @@ void ToolSurfaceWear::at(StepPoint, const MpmSolver<3>& solver)
         const double worn = wearPerWork_ * Fn * slip * dt;
         if (!(worn > 0.0)) continue;
         // Shared by area over the facets of the node's face within half a cell of it.
-        const double distance = (X - surface_->nearest(X).foot).norm();
         std::vector<std::pair<int, double>> patch;
         double area = 0;
         for (const auto& near : surface_->facetsNear(X, distance + 0.5 * h))
