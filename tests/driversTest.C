@@ -349,3 +349,121 @@ TEST(Drivers, aWeightedBodyTakesItsVelocityFromItsParticlesOnARestart)
     EXPECT_NEAR(d->velocity(t0 + dt, Vector2::Zero()).y(), -0.3 + dt * a0, 1e-13);  // the step taken
     EXPECT_NEAR(d->velocity(t0 + 2 * dt, Vector2::Zero()).y(), -0.3 + dt * a0, 1e-13);  // balanced now
 }
+
+// ---------------------------------------------------------------- weighted bodies that turn
+
+TEST(Drivers, aWeightedBodyWithFreeRotationSpinsUpAsMomentTimesTimeOverInertia)
+{
+    // A body of inertia I = 0.5 kg m (per metre) about its centre c = (1, 0), no weight: the
+    // material's moment M = 3 N m/m acts one step late, the added moment 1 N m/m at once, so
+    // omega(t_k) = (1 k + 3 (k - 1)) dt / I after k steps, and every point keeps its distance
+    // from c while it turns.
+    auto d = driver("type weighted; free (1 1); freeRotation 1; addedMoment 1;");
+    RigidBodyInfo<2> info;
+    info.mass = 2.0;
+    info.centroid = Vector2(1, 0);
+    info.inertia = 0.5;
+    d->attach(info);
+    const double dt = 1e-3, I = 0.5;
+    RigidBodyLoad<2> load;
+    load.moment = 3.0;  // about the origin; with no force, about c as well
+    Vector2 x(1.0, 0.3);
+    double t = 0;
+    for (int k = 1; k <= 200; ++k, t += dt) {
+        x = d->move(t, dt, x);
+        d->advance(t, dt, load);
+    }
+    const double omega = (1.0 * 200 + 3.0 * 199) * dt / I;
+    // v(x) = omega e3 x (x - c): 0.3 m above c it moves along -x1 at 0.3 omega.
+    EXPECT_NEAR(d->velocity(t, Vector2(1.0, 0.3)).x(), -0.3 * omega, 1e-12);
+    EXPECT_NEAR(d->velocity(t, Vector2(1.0, 0.0)).norm(), 0.0, 1e-15);  // c stays: no force
+    EXPECT_NEAR((x - Vector2(1, 0)).norm(), 0.3, 1e-13);
+    // The turn is the sum of omega dt over the steps, each step turning exactly.
+    double turn = 0;
+    for (int k = 1; k <= 200; ++k) turn += (1.0 * k + 3.0 * (k - 1)) * dt / I * dt;
+    EXPECT_NEAR(std::atan2(x.y(), x.x() - 1.0), pi / 2 + turn, 1e-12);
+}
+
+TEST(Drivers, aTurningBodyTakesItsSpinFromItsParticlesOnARestart)
+{
+    auto d = driver("type weighted; free (1 1); freeRotation 1;");
+    RigidBodyInfo<2> info;
+    info.mass = 2.0;
+    info.inertia = 0.5;
+    info.angularVelocity = 3.0;
+    d->attach(info);
+    EXPECT_NEAR(d->velocity(0.7, Vector2(0, 1)).x(), -3.0, 1e-14);
+    EXPECT_NEAR(d->velocity(0.7, Vector2(2, 0)).y(), 6.0, 1e-14);
+}
+
+TEST(Drivers, badFreeRotationInputNamesTheKeyword)
+{
+    EXPECT_TRUE(contains(driverError("body { type weighted; freeRotation 2; }"), "1 (turns freely about e3) or 0"));
+    EXPECT_TRUE(contains(driverError("body { type weighted; addedMoment 3; }"), "an added moment needs freeRotation"));
+}
+
+#if GPIC_WITH_3D
+namespace {
+std::unique_ptr<RigidBodyDriver<3>> driver3(const std::string& entry)
+{
+    const Dictionary d = Dictionary::parse("body { " + entry + " }", "constant/rigidBodies");
+    return RigidBodyDriver<3>::New(d.subDict("body"));
+}
+} // namespace
+
+TEST(Drivers, aBodyTurnsOnlyAboutItsFreeAxes)
+{
+    // Inertia diag(1, 2, 3) kg m^2; the moment (5, 4, 7) N m acts from the second step on. Free
+    // about x2 only: after k steps omega = (0, 4 (k - 1) dt / 2, 0), whatever the other components.
+    using V = Space<3>::Vector;
+    auto d = driver3("type weighted; free (1 0 1); freeRotation (0 1 0);");
+    RigidBodyInfo<3> info;
+    info.mass = 1.0;
+    info.inertia = V(1, 2, 3).asDiagonal();
+    info.angularVelocity = V(9, 0, 9);  // about fixed axes: not a motion of this body
+    d->attach(info);
+    RigidBodyLoad<3> load;
+    load.moment = V(5, 4, 7);
+    const double dt = 1e-3;
+    double t = 0;
+    for (int k = 1; k <= 100; ++k, t += dt) d->advance(t, dt, load);
+    const double omega2 = 4.0 * 99 * dt / 2.0;
+    // At x = c + e1: v = omega x e1 = (0, 0, -omega2).
+    EXPECT_TRUE(d->velocity(t, V(1, 0, 0)).isApprox(V(0, 0, -omega2), 1e-12)) << d->velocity(t, V(1, 0, 0)).transpose();
+    EXPECT_TRUE(contains(
+        [] {
+            try {
+                const Dictionary dd = Dictionary::parse("body { type weighted; freeRotation (0 1); }", "constant/rigidBodies");
+                RigidBodyDriver<3>::New(dd.subDict("body"));
+            } catch (const InputError& e) {
+                return std::string(e.what());
+            }
+            return std::string();
+        }(),
+        "(r1 r2 r3) with 1"));
+}
+
+TEST(Drivers, aBodySpinningAboutAPrincipalAxisTurnsItsPointsExactly)
+{
+    // No moment: a body of inertia diag(1, 2, 3) spinning at 2 rad/s about its x3 axis, a
+    // principal one, spins steadily, so after N steps each point has turned by 2 N dt about x3
+    // through c (Rodrigues, to round-off).
+    using V = Space<3>::Vector;
+    auto d = driver3("type weighted; free (1 1 1); freeRotation (1 1 1);");
+    RigidBodyInfo<3> info;
+    info.mass = 1.0;
+    info.centroid = V(0.5, 0.2, 0.1);
+    info.inertia = V(1, 2, 3).asDiagonal();
+    info.angularVelocity = V(0, 0, 2);
+    d->attach(info);
+    const double dt = 1e-3;
+    V x = info.centroid + V(0.3, 0, 0.4);
+    double t = 0;
+    for (int k = 0; k < 1000; ++k, t += dt) {
+        x = d->move(t, dt, x);
+        d->advance(t, dt, RigidBodyLoad<3>{});
+    }
+    const double turn = 2.0 * 1000 * dt;
+    EXPECT_TRUE(x.isApprox(info.centroid + V(0.3 * std::cos(turn), 0.3 * std::sin(turn), 0.4), 1e-12)) << x.transpose();
+}
+#endif

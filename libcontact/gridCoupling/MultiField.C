@@ -24,11 +24,17 @@ template <int D> void MultiField<D>::particlesToGrid(EngineView<D>& e, double t)
     const double* Nw = w.N.data();
     const typename Grid<D>::ActiveMarker markActive = grid.activeMarker();
     const bool affine = p.carries(FieldGroup::affine);
-    e.strips.forEach([&, node, Nw, markActive, affine, stride](std::size_t q) {
+    const bool positions = bodies.tracksPositions();
+    e.strips.forEach([&, node, Nw, markActive, affine, stride, positions](std::size_t q) {
         const std::size_t k0 = q * stride;
         BodyField<D>& body = bodies.field(p.body[q]);
         double* mass = body.mass.data();
         Vector* momentum = body.momentum.data();
+        if (positions) {  // the separation check's nodal positions (MultiFieldContact.H)
+            Vector* position = body.position.data();
+            for (int a = 0; a < stride; ++a)
+                if (node[k0 + a] >= 0) position[node[k0 + a]] += (Nw[k0 + a] * e.inertialMass(q)) * p.x[q];
+        }
         const double m = e.inertialMass(q);  // m_p, or scaled (MassScaling.H)
         const Vector vp = p.v[q];           // read once, not after every store (as SingleField)
         for (int a = 0; a < stride; ++a) {

@@ -20,9 +20,23 @@ template <int D>
 MultiFieldContact<D>::MultiFieldContact(const Dictionary& dict, ContactParts<D>& parts)
     : ContactPass<D>(parts.nBodies, *parts.grid), law_(std::move(parts.law)), normals_(std::move(parts.normals)),
       normalsName_(parts.normalsName), correctRemapped_(dict.getOrDefault<bool>("correctRemapped", false)),
-      remappedChoiceMade_(dict.found("correctRemapped")), fileName_(dict.fileName())
+      remappedChoiceMade_(dict.found("correctRemapped")), fileName_(dict.fileName()), cellSize_(parts.grid->cellSize())
 {
     present_.reserve(static_cast<std::size_t>(this->nBodies()));
+    if (dict.found("separationCutoff")) {
+        separationCutoff_ = dict.getChecked<double>("separationCutoff", [](double c) { return c > 0.0 && c <= 2.0; },
+                                                    "a distance in cells, 0 < cutoff <= 2 (0.8 for two particles per cell axis)");
+        this->trackPositions();
+    }
+}
+
+template <int D> bool MultiFieldContact<D>::touching(int a, int b, int n, const Vector& normal) const
+{
+    if (separationCutoff_ == 0.0) return true;
+    const BodyField<D>& fa = this->field(a);
+    const BodyField<D>& fb = this->field(b);
+    const Vector gap = fb.position[n] / fb.mass[n] - fa.position[n] / fa.mass[n];
+    return gap.dot(normal) <= separationCutoff_ * normal.cwiseProduct(cellSize_).norm();
 }
 
 template <int D>
@@ -100,7 +114,7 @@ void MultiFieldContact<D>::correctNodes(Grid<D>& grid, const Drivers& rigid, dou
             for (int b : present_) {
                 if (isRigid(b)) continue;
                 const Vector normal = normals_->towardsRigid(b, r, n, x);
-                if (normal.isZero()) continue;
+                if (normal.isZero() || !touching(b, r, n, normal)) continue;
                 const Vector f = apply(b, r, n, vRef, normal);
                 if (!loads) continue;
                 (*loads)[b].force += f;
@@ -119,8 +133,10 @@ void MultiFieldContact<D>::correctNodes(Grid<D>& grid, const Drivers& rigid, dou
         }
         const Vector vCm = momentum / mass;
         Vector pairNormal = Vector::Zero();
-        if (present_.size() == 2)
+        if (present_.size() == 2) {
             pairNormal = unit<D>(normals_->outward(present_[0], n) - normals_->outward(present_[1], n));
+            if (!pairNormal.isZero() && !touching(present_[0], present_[1], n, pairNormal)) continue;
+        }
         for (std::size_t k = 0; k < present_.size(); ++k) {
             const int b = present_[k];
             Vector normal;

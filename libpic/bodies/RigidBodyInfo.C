@@ -1,6 +1,8 @@
 #include "bodies/RigidBodyDriver.H"
 #include "particles/Particles.H"
 
+#include <Eigen/LU>
+
 namespace gpic {
 
 template <int D>
@@ -17,6 +19,26 @@ std::vector<RigidBodyInfo<D>> RigidBodyInfo<D>::ofBodies(const Particles<D>& p, 
         if (b.mass > 0) b.centroid /= b.mass;
         if (b.mass > 0) b.velocity /= b.mass;
         b.gravity = gravity;
+    }
+    // The points' own inertia and angular momentum give the spin (the inertia below adds each
+    // particle's domain, which a point's velocity does not turn).
+    using Moment = typename Space<D>::Moment;
+    std::vector<typename Space<D>::Inertia> pointInertia(nBodies, zeroInertia());
+    std::vector<Moment> momentum(nBodies, Space<D>::zeroMoment());
+    for (std::size_t q = 0; q < p.size(); ++q) {
+        const auto b = p.body[q];
+        const Vector r = p.x[q] - info[b].centroid;
+        momentum[b] += p.m[q] * momentOf(r, p.v[q]);
+        if constexpr (D == 2) pointInertia[b] += p.m[q] * r.squaredNorm();
+        else pointInertia[b] += p.m[q] * (r.squaredNorm() * Space<3>::Inertia::Identity() - r * r.transpose()).eval();
+    }
+    for (std::size_t b = 0; b < nBodies; ++b) {
+        if constexpr (D == 2) {
+            if (pointInertia[b] > 0.0) info[b].angularVelocity = momentum[b] / pointInertia[b];
+        } else {
+            const Eigen::FullPivLU<Space<3>::Inertia> lu(pointInertia[b]);
+            if (lu.rank() == 3) info[b].angularVelocity = lu.solve(momentum[b]);  // none for points on a line
+        }
     }
     for (std::size_t q = 0; q < p.size(); ++q) {
         auto& b = info[p.body[q]];

@@ -17,6 +17,12 @@ ContactPass<D>::ContactPass(int nBodies, const Grid<D>& grid) : fields_(static_c
     }
 }
 
+template <int D> void ContactPass<D>::trackPositions()
+{
+    tracksPositions_ = true;
+    for (auto& f : fields_) f.position.assign(f.mass.size(), Vector::Zero());
+}
+
 template <int D>
 void ContactPass<D>::reset(const std::vector<int>& active)
 {
@@ -30,6 +36,11 @@ void ContactPass<D>::reset(const std::vector<int>& active)
     std::vector<Arrays> bodyArrays;
     for (BodyField<D>& f : fields_)
         bodyArrays.push_back({f.mass.data(), {f.momentum.data(), f.velocity.data(), f.force.data(), f.accel.data()}});
+    if (tracksPositions_)  // a fifth array only where it is kept: the zeroing of the others unchanged
+        for (BodyField<D>& f : fields_) {
+            Vector* position = f.position.data();
+            parallelFor(static_cast<long>(active.size()), [=, nodes = active.data()](long k) { position[nodes[k]].setZero(); });
+        }
     const Arrays* arrays = bodyArrays.data();
     const int* nodes = active.data();
     const int bodies = nBodies();
