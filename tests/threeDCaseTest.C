@@ -61,6 +61,10 @@ void write(const fs::path& dir, const Scene& s)
     if (!s.schemes.empty()) writeDictionary(dir / "system/mpmSchemes", s.schemes);
 }
 
+//- A grid open on all six sides.
+const char* const freeSides = "boundaries { left { type free; } right { type free; } bottom { type free; } top { type free; } "
+                              "back { type free; } front { type free; } }\n";
+
 const char* const sand = "sand { type mohrCoulomb; rho 2000; E 2e6; nu 0.3; phi 30; psi 0; c 0; }\n";
 
 //- A column of sand 0.1 m wide and high in a box with smooth walls, settling under gravity:
@@ -183,9 +187,8 @@ TEST(ThreeDCase, aBlockFallsFreelyAlongGravityAndKeepsItsPlaceAcrossIt)
     ScratchDir scratch{"fall"};
     Scene s;
     s.materials = "rubber { type linearElastic; rho 1000; E 1e5; nu 0.3; }\n";
-    s.grid = "origin (0 0 0); cellSize 0.05; nCells (6 6 20);\n"
-             "boundaries { left { type free; } right { type free; } bottom { type free; } top { type free; } "
-             "back { type free; } front { type free; } }\n";
+    s.grid = "origin (0 0 0); cellSize 0.05; nCells (6 6 20);\n" +
+             std::string(freeSides);
     s.bodies = "block { material rubber; shape { type box; min (0.1 0.1 0.8); max (0.2 0.25 0.9); } "
                "particlesPerCell 2; }\n";
     s.g = "value (0 0 -9.81);\n";
@@ -392,9 +395,8 @@ TEST(ThreeDCase, aRigidBoxSpinningInFreeFlightTurnsAsOnePieceAboutItsCentre)
     Scene s;
     // Soft, so that the time step of the wave speed (which a rigid body's material still sets) is large.
     s.materials = "steel { type linearElastic; rho 7800; E 1e6; nu 0.3; }\n";
-    s.grid = "origin (0 0 0); cellSize 0.02; nCells (20 20 6);\n"
-             "boundaries { left { type free; } right { type free; } bottom { type free; } top { type free; } "
-             "back { type free; } front { type free; } }\n";
+    s.grid = "origin (0 0 0); cellSize 0.02; nCells (20 20 6);\n" +
+             std::string(freeSides);
     s.bodies = "box { material steel; shape { type box; min (0.1 0.15 0.03); max (0.3 0.25 0.09); } particlesPerCell 2;\n"
                "      velocity (\"-2*(y-0.2)\" \"2*(x-0.2)\" 0); }\n";
     s.g = "value (0 0 0);\n";
@@ -588,9 +590,8 @@ TEST(ThreeDCase, aRigidBodyTurnsAboutASlantedAxisThroughAPointExactly)
     ScratchDir scratch{"turn3d"};
     Scene s;
     s.materials = "tool { type linearElastic; rho 1000; E 1e6; nu 0.3; }\n";
-    s.grid = "origin (0 0 0); cellSize 0.05; nCells (12 12 12);\n"
-             "boundaries { left { type free; } right { type free; } bottom { type free; } top { type free; } "
-             "back { type free; } front { type free; } }\n";
+    s.grid = "origin (0 0 0); cellSize 0.05; nCells (12 12 12);\n" +
+             std::string(freeSides);
     s.bodies = "block { material tool; shape { type box; min (0.2 0.25 0.25); max (0.4 0.35 0.35); } "
                "particlesPerCell 2; }\n";
     writeDictionary(scratch.path() / "constant/rigidBodies",

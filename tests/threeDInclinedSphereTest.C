@@ -22,12 +22,10 @@ namespace {
 
 const double g = 9.81;
 
-//- Centre displacement along the plane at endTime, from bodyMotion.dat.
-double centreDisplacement(double thetaDeg, double mu, double endTime)
+//- A copy of the tutorial's case `path` in dir, with its ball and gravity tilted by theta.
+void prepare(const std::string& path, const fs::path& dir, double thetaDeg, double endTime)
 {
-    ScratchDir scratch("inclinedSphere");
-    const fs::path dir = scratch.path() / "inclinedSphere";
-    copyCase(tutorialPath("contact/inclinedSphere"), dir);
+    copyCase(tutorialPath(path), dir);
     // The tutorial's Allrun writes the STL; here the same ball, 1280 facets.
     fs::create_directories(dir / "constant/triSurface");
     writeBinaryStl(dir / "constant/triSurface/sphere.stl", sphereSurface(Eigen::Vector3d::Zero(), 0.5, 3));
@@ -36,9 +34,17 @@ double centreDisplacement(double thetaDeg, double mu, double endTime)
     gravity.precision(17);
     gravity << "(" << g * std::sin(th) << " 0 " << -g * std::cos(th) << ")";
     setEntry(dir / "constant/g", "value", gravity.str());
-    replaceText(dir / "constant/grid", "frictionalWall; mu 0.3;", "frictionalWall; mu " + std::to_string(mu) + ";");
     setEntry(dir / "system/controlDict", "endTime", std::to_string(endTime));
     setEntry(dir / "system/controlDict", "writeInterval", std::to_string(endTime));
+}
+
+//- Centre displacement along the plane at endTime, from bodyMotion.dat.
+double centreDisplacement(double thetaDeg, double mu, double endTime)
+{
+    ScratchDir scratch("inclinedSphere");
+    const fs::path dir = scratch.path() / "inclinedSphere";
+    prepare("contact/inclinedSphere", dir, thetaDeg, endTime);
+    replaceText(dir / "constant/grid", "frictionalWall; mu 0.3;", "frictionalWall; mu " + std::to_string(mu) + ";");
     runAndKeep<3>(dir);
     const auto col = readColumns(dir / "postProcessing/motion/0/bodyMotion.dat");
     EXPECT_NEAR(col.at("time").back(), endTime, 1e-9);
@@ -97,18 +103,9 @@ std::pair<double, double> rigidBallMotion(double thetaDeg, double mu, double end
 {
     ScratchDir scratch("rigidBall");
     const fs::path dir = scratch.path() / "rigidBall";
-    copyCase(tutorialPath("contact/inclinedSphere/rigidBall"), dir);
-    fs::create_directories(dir / "constant/triSurface");
-    writeBinaryStl(dir / "constant/triSurface/sphere.stl", sphereSurface(Eigen::Vector3d::Zero(), 0.5, 3));
-    const double th = thetaDeg * M_PI / 180;
-    std::ostringstream gravity;
-    gravity.precision(17);
-    gravity << "(" << g * std::sin(th) << " 0 " << -g * std::cos(th) << ")";
-    setEntry(dir / "constant/g", "value", gravity.str());
+    prepare("contact/inclinedSphere/rigidBall", dir, thetaDeg, endTime);
     setEntry(dir / "constant/contactProperties", "mu", std::to_string(mu));
     if (!separationCheck) replaceText(dir / "constant/contactProperties", "separationCutoff  0.8;", "");
-    setEntry(dir / "system/controlDict", "endTime", std::to_string(endTime));
-    setEntry(dir / "system/controlDict", "writeInterval", std::to_string(endTime));
     runAndKeep<3>(dir);
     const auto col = readColumns(dir / "postProcessing/motion/0/bodyMotion.dat");
     EXPECT_NEAR(col.at("time").back(), endTime, 1e-9);
