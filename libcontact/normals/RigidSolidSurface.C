@@ -26,21 +26,54 @@ RigidSolidSurface::RigidSolidSurface(const Dictionary& d) : surface_(surfaceOf(d
 
 void RigidSolidSurface::place(const Particles<3>& p, int body, double reach)
 {
-    pose_ = RigidPose::of(p, body);
+    const RigidPose pose = RigidPose::of(p, body);
+    // Searches made where the body was stay true only where it still is, to the bit.
+    steady_ = pose.R == pose_.R && pose.c0 == pose_.c0 && pose.c == pose_.c && reach == reach_;
+    if (!steady_) searches_.clear();
+    pose_ = pose;
     reach_ = reach;
 }
 
-RigidSolidSurface::Vector RigidSolidSurface::outwardNormal(const Vector& x, const Vector& hint) const
+RigidSolidSurface::NodeSearch RigidSolidSurface::search(const Vector& X) const
+{
+    NodeSearch s;
+    s.nearest = surface_.nearest(X);
+    s.near = surface_.facetsNear(X, s.nearest.distance + reach_);
+    return s;
+}
+
+RigidSolidSurface::NodeSearch& RigidSolidSurface::searchAt(int node, const Vector& X) const
+{
+    if (!steady_) return moving_ = search(X);  // a moving tool: nothing to keep
+    const auto found = searches_.find(node);
+    if (found != searches_.end()) return found->second;
+    return searches_.emplace(node, search(X)).first->second;
+}
+
+bool RigidSolidSurface::inside(NodeSearch& s, const Vector& X) const
+{
+    if (s.inside < 0) s.inside = surface_.inside(X) ? 1 : 0;
+    return s.inside == 1;
+}
+
+RigidSolidSurface::Vector RigidSolidSurface::outwardNormal(const Vector& x, const Vector& hint, int node) const
 {
     const Vector X = pose_.unplace(x), H = pose_.unturn(hint);
+    if (node >= 0) return normalFrom(searchAt(node, X), X, H);
+    NodeSearch s = search(X);
+    return normalFrom(s, X, H);
+}
+
+RigidSolidSurface::Vector RigidSolidSurface::normalFrom(NodeSearch& s, const Vector& X, const Vector& H) const
+{
     const double tol = 1e-12 * scale_;
-    const TriSurface::FacetPoint any = surface_.nearest(X);
+    const TriSurface::FacetPoint any = s.nearest;
     const double toSurface = any.distance;
     // The nearest facets, and the nearest of those turned to the material (RigidSurface.H).
     const double facing = -std::sin(10.0 * M_PI / 180.0) * H.norm();
     Vector anyNormal = Vector::Zero(), normal = Vector::Zero(), foot = any.foot;
     double dist = std::numeric_limits<double>::max();
-    for (const auto& f : surface_.facetsNear(X, toSurface + reach_)) {
+    for (const auto& f : s.near) {
         const Vector n = surface_.facetNormal(f.facet);
         if (f.distance <= toSurface + tol) anyNormal += n;
         if (H.isZero() || !(n.dot(H) < facing)) continue;
@@ -60,12 +93,20 @@ RigidSolidSurface::Vector RigidSolidSurface::outwardNormal(const Vector& x, cons
     normal.normalize();
     // Clear of the body beyond an edge or a corner: the direction from the nearest point,
     // where the material wraps round it (RigidSurface.H).
-    if (toSurface > tol && !surface_.inside(X)) {
+    if (toSurface > tol && !inside(s, X)) {
         const Vector fromFoot = (X - foot) / dist;
         const bool wraps = H.isZero() || fromFoot.dot(H) < normal.dot(H);
         if (fromFoot.dot(normal) > 0 && fromFoot.dot(normal) < 1 - 1e-12 && wraps) return pose_.turn(fromFoot);
     }
     return pose_.turn(normal);
+}
+
+bool RigidSolidSurface::facesNode(int node, const Vector& x) const
+{
+    if (!steady_) return facesNode(x);
+    NodeSearch& s = searchAt(node, pose_.unplace(x));
+    if (s.faces < 0) s.faces = facesNode(x) ? 1 : 0;
+    return s.faces == 1;
 }
 
 bool RigidSolidSurface::facesNode(const Vector& x) const

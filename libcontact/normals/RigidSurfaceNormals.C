@@ -29,16 +29,19 @@ void RigidSurfaceNormals<D>::place(const Grid<D>& grid, const Particles<D>& p, c
     }
 }
 
-template <int D> bool RigidSurfaceNormals<D>::acts(int r, int /*n*/, const Vector& x) const
+template <int D> bool RigidSurfaceNormals<D>::acts(int r, int n, const Vector& x) const
 {
-    return !surfaces_[r] || surfaces_[r]->facesNode(x);
+    if (!surfaces_[r]) return true;
+    if constexpr (D == 2) return surfaces_[r]->facesNode(x);
+    else return surfaces_[r]->facesNode(n, x);
 }
 
 template <int D>
 typename RigidSurfaceNormals<D>::Vector RigidSurfaceNormals<D>::towardsRigid(int b, int r, int n, const Vector& x) const
 {
     if (!surfaces_[r]) return MassGradientNormals<D>::towardsRigid(b, r, n, x);
-    return -surfaces_[r]->outwardNormal(x, this->outward(b, n));
+    if constexpr (D == 2) return -surfaces_[r]->outwardNormal(x, this->outward(b, n));
+    else return -surfaces_[r]->outwardNormal(x, this->outward(b, n), n);
 }
 
 template class RigidSurfaceNormals<2>;
