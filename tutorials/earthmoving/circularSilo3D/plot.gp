@@ -15,9 +15,9 @@ set output 'error.png'
 set logscale x
 set xlabel 'wall time [s]'
 set ylabel '(flow rate - Beverloo) / Beverloo [%]'
-set title 'Cylindrical silo: error of the mean flow rate against wall time (labels: D mm, cells, geometry)'
+set title 'Cylindrical silo: error of the mean flow rate against wall time (labels: D mm, cells across the radius)'
 set yrange [-60:60]
-set key top right
+set key bottom right
 plot 'errors.dat' using 6:(strcol(3) eq 'threeD' ? $11 : 1/0) with points pt 7 ps 1.5 lc rgb 'black' title '3D quarter', \
      '' using 6:(strcol(3) eq 'axisymmetric' ? $11 : 1/0) with points pt 6 ps 1.5 lc rgb 'black' title 'axisymmetric', \
      '' using 6:11:(sprintf('D%s n%s', strcol(1), strcol(2))) with labels offset 0,1 font ',8' notitle, \
