@@ -1,7 +1,8 @@
 """The discharge of a silo for tutorial scripts (standard library only): the mass in the silo
 from a massFlow function object against time, its mean slope after the flow has built up,
 and Beverloo's rate at the orifice the grid opens. Used by tutorials/earthmoving/silos (a
-slot, plane) and tutorials/earthmoving/circularSilo (a circular orifice, axisymmetric)."""
+slot, plane), tutorials/earthmoving/circularSilo (a circular orifice, axisymmetric) and
+tutorials/earthmoving/circularSilo3D (the same in 3D)."""
 import math
 import os
 import re
@@ -67,10 +68,11 @@ def slope(ts, ms):
 
 
 
-def analyse(argv, beverloo, width='w'):
+def analyse(argv, beverloo, width='w', opened=opened_width):
     """The command line of a silo tutorial's analyse.py: <case> -rho R -d D -w W [-series].
     `beverloo(rho, w, d)` is the reference rate [kg/s] through an orifice of width (or
-    diameter) w; `width` names it in series.dat. Prints the line the Allrun reads."""
+    diameter) w; `width` names it in series.dat; `opened(case)` is the width the grid opens
+    (default: a plane side's stretch, opened_width). Prints the line the Allrun reads."""
     case = argv[1]
     rho, = option(argv, '-rho', 1, [None])
     d, = option(argv, '-d', 1, [None])
@@ -88,7 +90,7 @@ def analyse(argv, beverloo, width='w'):
     if len(window) < 3:
         sys.exit(f'{case}: too few samples of the mass after {START} s of discharge')
     rate = -slope([t for t, _ in window], [m for _, m in window])
-    w_h = opened_width(case)
+    w_h = opened(case)
     ref, nominal = beverloo(rho, w_h, d), beverloo(rho, w, d)
     wall = wall_at(os.path.join(case, 'log.picSolver'), t1) - wall_at(os.path.join(case, 'log.picSolver'), t0)
     particles = 0
