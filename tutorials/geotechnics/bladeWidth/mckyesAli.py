@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Draft force of a finite-width blade by McKyes & Ali (1977), J. Terramechanics 14(2) 43-58,
-in the form of McKyes (1985), Soil Cutting and Tillage, Elsevier, ch. 4.
+in the form of McKyes (1985), Soil Cutting and Tillage, Elsevier.
 
 A blade of width w and rake angle alpha (from the horizontal; 90 deg: vertical) reaching d
 below the surface fails a central wedge, bounded by a plane from the blade's tip rising at
