@@ -66,6 +66,7 @@ foreach(tutorial "verification/elasticBar;bar.png;error.png"
                  "geotechnics/circularFooting;pressure.png;error.png"
                  "geotechnics/verticalCut;pressure.png;error.png"
                  "geotechnics/blade;force.png;depth.png;error.png"
+                 "geotechnics/bladeWidth;force.png;width.png;error.png"
                  "geotechnics/retainingWall;force.png;error.png"
                  "geotechnics/stripFooting;pressure.png;error.png"
                  "geotechnics/anchors;load.png;error.png"
@@ -86,7 +87,8 @@ foreach(tutorial "verification/elasticBar;bar.png;error.png"
                  "studies/bucketGeometry;studies/bucketGeometry/plots/carried-toothLength.png;studies/bucketGeometry/plots/toothWear-toothAngle.png")
   list(GET tutorial 0 path)
   if(NOT GPIC_WITH_3D AND (path STREQUAL "geotechnics/cylinderCollapse" OR path STREQUAL "verification/stlVolumes"
-                           OR path STREQUAL "contact/inclinedSphere" OR path STREQUAL "earthmoving/circularSilo3D"))
+                           OR path STREQUAL "contact/inclinedSphere" OR path STREQUAL "earthmoving/circularSilo3D"
+                           OR path STREQUAL "geotechnics/bladeWidth"))
     continue()  # a 3D case: a plane build refuses it
   endif()
   list(SUBLIST tutorial 1 -1 plots)

@@ -10,7 +10,9 @@
 // - the same block on the plate drawn as STL wears it by Archard's law (toolWear in 3D): the
 //   worn volume (k/H) N s within 3 %, all of it on the top face, carried by the surface file;
 // - two elastic spheres meeting off-centre with friction: the momentum of the pair is kept to
-//   1e-9 (the pair's normals opposite, G.4) and no kinetic energy is made.
+//   1e-9 (the pair's normals opposite, G.4) and no kinetic energy is made;
+// - a rigid box drives the nodes inside it and in front of its faces, not those beyond an
+//   edge, nor those level with a face beyond its edge (the plane rule).
 #include "case/CaseInitialiser.H"
 #include "contact/ContactLaw.H"
 #include "dictionary/Dictionary.H"
@@ -18,6 +20,7 @@
 #include "support/CaseRunner.H"
 #include "support/StlSurfaces.H"
 #include "io/SurfaceVtk.H"
+#include "normals/RigidSolidSurface.H"
 
 #include <gtest/gtest.h>
 
@@ -31,6 +34,27 @@
 using namespace gpic;
 using namespace gpic::test;
 using Vector3 = Space<3>::Vector;
+
+// The plane blade's nodes (tests/contactTest.C) in 3D, the blade a box 0.1 wide: the node one
+// cell ahead of its foot, level with the foot, is beyond the foot's edge. Counted as facing
+// it, it pushed the sand below the foot along: a finite blade's draft force (seed 4.7 across
+// the width, tutorials/geotechnics/bladeWidth) tripled once its front particles crossed into
+// the next cell, where the plane blade's held.
+TEST(RigidSolidSurface, facesTheNodesInsideAndInFrontOfAFaceButNotBeyondAnEdge)
+{
+    const RigidSolidSurface blade(Dictionary::parse("type box; min (0.3 0 0.2); max (0.32 0.1 0.45);", "constant/bodies"));
+    EXPECT_TRUE(blade.facesNode(Vector3(0.31, 0.05, 0.3)));    // inside
+    EXPECT_TRUE(blade.facesNode(Vector3(0.32, 0.05, 0.3)));    // on the front face
+    EXPECT_TRUE(blade.facesNode(Vector3(0.32, 0.05, 0.2)));    // on the foot's edge
+    EXPECT_TRUE(blade.facesNode(Vector3(0.33, 0.05, 0.3)));    // in front of the front face
+    EXPECT_TRUE(blade.facesNode(Vector3(0.31, 0.05, 0.19)));   // below the foot
+    EXPECT_TRUE(blade.facesNode(Vector3(0.31, 0.11, 0.3)));    // beside the side face
+    EXPECT_FALSE(blade.facesNode(Vector3(0.33, 0.05, 0.2)));   // level with the foot, ahead of it
+    EXPECT_FALSE(blade.facesNode(Vector3(0.33, 0.05, 0.19)));  // below and ahead
+    EXPECT_FALSE(blade.facesNode(Vector3(0.33, 0.1, 0.3)));    // level with the side face, ahead
+    EXPECT_FALSE(blade.facesNode(Vector3(0.31, 0.1, 0.19)));   // level with the side face, below
+    EXPECT_FALSE(blade.facesNode(Vector3(0.33, 0.11, 0.19)));  // beyond the foot's corner
+}
 
 TEST(ThreeDContact, theCoulombLawStopsTheApproachAndSlowsTheSlideAgainstItsDirection)
 {

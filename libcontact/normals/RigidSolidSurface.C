@@ -117,8 +117,19 @@ bool RigidSolidSurface::facesNode(const Vector& x) const
     const TriSurface::FacetPoint near = surface_.nearest(X);
     if (near.distance <= 1e-12 * scale_) return true;
     // In front of a face: the way to the node from its nearest point is the face's normal
-    // (also where that point lies on an edge between two triangles of one flat face).
-    if ((X - near.foot).dot(surface_.facetNormal(near.facet)) >= (1 - 1e-9) * near.distance) return true;
+    // (also where that point lies on an edge between two triangles of one flat face) ...
+    const Vector n = surface_.facetNormal(near.facet);
+    if ((X - near.foot).dot(n) >= (1 - 1e-9) * near.distance) {
+        // ... and that point is not on an edge or a corner of the body, where a face of
+        // another plane meets it at the same point: the node then lies level with that face,
+        // beyond the edge, as the node one cell ahead of a blade's foot does. The plane
+        // RigidSurface counts the end of a side as its corner alike; counted as facing, that
+        // node pushed the sand below the foot along (doc/contact.md, "Nodes beyond a corner").
+        const double band = 1e-9 * scale_;
+        for (const auto& f : surface_.facetsNear(X, near.distance + band))
+            if ((f.foot - near.foot).norm() <= band && surface_.facetNormal(f.facet).dot(n) < 1 - 1e-9) return false;
+        return true;
+    }
     return surface_.inside(X);
 }
 
