@@ -54,6 +54,13 @@ TEST(RigidSolidSurface, facesTheNodesInsideAndInFrontOfAFaceButNotBeyondAnEdge)
     EXPECT_FALSE(blade.facesNode(Vector3(0.33, 0.1, 0.3)));    // level with the side face, ahead
     EXPECT_FALSE(blade.facesNode(Vector3(0.31, 0.1, 0.19)));   // level with the side face, below
     EXPECT_FALSE(blade.facesNode(Vector3(0.33, 0.11, 0.19)));  // beyond the foot's corner
+
+    // Standing on the grid's floor x3 = 0.2 (a silo's wall), the foot's face has no material
+    // below it: the floor's node level with it, in front of the front face, faces the wall.
+    RigidSolidSurface wall(Dictionary::parse("type box; min (0.3 0 0.2); max (0.32 0.1 0.45);", "constant/bodies"));
+    wall.place(Particles<3>{}, 0, 0.01, Vector3(0, 0, 0.2), Vector3(1, 1, 1));
+    EXPECT_TRUE(wall.facesNode(Vector3(0.33, 0.05, 0.2)));    // on the floor, in front of the face
+    EXPECT_FALSE(wall.facesNode(Vector3(0.33, 0.1, 0.3)));    // level with the side face, ahead: as before
 }
 
 TEST(ThreeDContact, theCoulombLawStopsTheApproachAndSlowsTheSlideAgainstItsDirection)

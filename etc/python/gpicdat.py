@@ -133,6 +133,27 @@ def last_state(case):
     return times[-1], read_particles(os.path.join(case, times[-1], 'particles.vtp'))
 
 
+def case_entries(path, name):
+    """Keyword values of the sub-dictionary `name` of a case file (or of the file itself)."""
+    text = re.sub(r'//[^\n]*', '', open(path).read())
+    if name:
+        text = re.search(r'\b' + name + r'\s*\{([^}]*)\}', text).group(1)
+    return dict(re.findall(r'(\w+)\s+([^;\s]+)\s*;', text))
+
+
+def tool_depth(case):
+    """How deep a tool reaches into the material at time 0 [m]: the top of body 0's particle
+    domains less the foot of body 1's, along the last axis (x2 in a plane case, x3 in 3D)."""
+    part = read_particles(os.path.join(case, '0', 'particles.vtp'))
+    up = len(part['Points'][0]) - 1
+    if up == 2 and all(abs(x[2]) < 1e-12 for x in part['Points']):
+        up = 1   # a plane case written with three coordinates
+    ys = [(b, x[up], s[up]) for b, x, s in zip(part['body'], part['Points'], part['halfSize'])]
+    surface = max(y + s for b, y, s in ys if b == 0)
+    foot = min(y - s for b, y, s in ys if b == 1)
+    return surface - foot
+
+
 def cell_size(case):
     """The (square) cell size of <case>/constant/grid."""
     return float(re.search(r'cellSize\s+([0-9.e-]+);', open(os.path.join(case, 'constant', 'grid')).read()).group(1))

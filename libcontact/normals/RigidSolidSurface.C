@@ -24,8 +24,22 @@ RigidSolidSurface::RigidSolidSurface(const Dictionary& d) : surface_(surfaceOf(d
     surface_.inside(lo);  // builds the search trees now, not inside the contact pass
 }
 
-void RigidSolidSurface::place(const Particles<3>& p, int body, double reach)
+bool RigidSolidSurface::onGridSide(const Vector& foot, const Vector& normal) const
 {
+    const Vector x = pose_.place(foot), n = pose_.turn(normal);
+    const double tol = 1e-9 * scale_;
+    for (int a = 0; a < 3; ++a) {
+        if (n[a] < -(1 - 1e-9) && std::abs(x[a] - gridLower_[a]) <= tol) return true;
+        if (n[a] > 1 - 1e-9 && std::abs(x[a] - gridUpper_[a]) <= tol) return true;
+    }
+    return false;
+}
+
+void RigidSolidSurface::place(const Particles<3>& p, int body, double reach, const Vector& gridLower,
+                              const Vector& gridUpper)
+{
+    gridLower_ = gridLower;
+    gridUpper_ = gridUpper;
     const RigidPose pose = RigidPose::of(p, body);
     // Searches made where the body was stay true only where it still is, to the bit.
     steady_ = pose.R == pose_.R && pose.c0 == pose_.c0 && pose.c == pose_.c && reach == reach_;
@@ -125,9 +139,15 @@ bool RigidSolidSurface::facesNode(const Vector& x) const
         // beyond the edge, as the node one cell ahead of a blade's foot does. The plane
         // RigidSurface counts the end of a side as its corner alike; counted as facing, that
         // node pushed the sand below the foot along (doc/contact.md, "Nodes beyond a corner").
-        const double band = 1e-9 * scale_;
+        // An edge of the body is where faces meet at more than 30 degrees (a blade's foot);
+        // the seams of a round wall drawn by facets (a few degrees) are not. A face that lies
+        // on a side of the grid has no material beyond it (a silo's wall standing on the
+        // floor): the node level with it, on that side, still faces.
+        const double band = 1e-9 * scale_, edge = std::cos(30.0 * M_PI / 180.0);
         for (const auto& f : surface_.facetsNear(X, near.distance + band))
-            if ((f.foot - near.foot).norm() <= band && surface_.facetNormal(f.facet).dot(n) < 1 - 1e-9) return false;
+            if ((f.foot - near.foot).norm() <= band && surface_.facetNormal(f.facet).dot(n) < edge &&
+                !onGridSide(f.foot, surface_.facetNormal(f.facet)))
+                return false;
         return true;
     }
     return surface_.inside(X);

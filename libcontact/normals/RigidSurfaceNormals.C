@@ -25,7 +25,7 @@ void RigidSurfaceNormals<D>::place(const Grid<D>& grid, const Particles<D>& p, c
     for (std::size_t b = 0; b < surfaces_.size(); ++b) {
         if (!surfaces_[b]) continue;
         if constexpr (D == 2) surfaces_[b]->place(p, static_cast<int>(b));
-        else surfaces_[b]->place(p, static_cast<int>(b), grid.cellSize().maxCoeff());
+        else surfaces_[b]->place(p, static_cast<int>(b), grid.cellSize().maxCoeff(), grid.origin(), grid.upper());
     }
 }
 

@@ -39,7 +39,7 @@ import sys
 
 sys.path.insert(0, os.path.join(os.environ.get('GPIC_DIR', '../../..'), 'etc', 'python'))
 import gpicdat  # noqa: E402
-from gpicdat import read_particles, tool_forces, window_mean  # noqa: E402
+from gpicdat import case_entries, read_particles, tool_depth, tool_forces, window_mean  # noqa: E402
 
 # Seed 6.2.5, fig. 6.14 and its text: nonpolar / Sokolovski and nonpolar / experiment.
 SEED_NONPOLAR_SOK = {0.15: 1.12, 0.25: 1.06, 0.35: 1.05}
@@ -50,27 +50,10 @@ def option(name, count, default):
     return gpicdat.option(sys.argv, name, count, default)
 
 
-def entries(path, name):
-    """Keyword values of the sub-dictionary `name` of a case file (or of the file itself)."""
-    text = re.sub(r'//[^\n]*', '', open(path).read())
-    if name:
-        text = re.search(r'^\s*' + name + r'\s*\{([^}]*)\}', text, re.M).group(1)
-    return dict(re.findall(r'(\w+)\s+([^;\s]+)\s*;', text))
-
-
-def depth(case):
-    """Top of the corn's particle domains less the blade's foot, at time 0 [m]."""
-    part = read_particles(os.path.join(case, '0', 'particles.vtp'))
-    ys = [(b, x[1], s[1]) for b, x, s in zip(part['body'], part['Points'], part['halfSize'])]
-    surface = max(y + s for b, y, s in ys if b == 0)
-    foot = min(y - s for b, y, s in ys if b == 1)
-    return surface - foot
-
-
 def sokolovski(h, case):
     """(F_x1, F_x2, x_s) of a rough wall of depth h in the case's corn."""
-    corn = entries(os.path.join(case, 'constant', 'materials'), 'corn')
-    mu = entries(os.path.join(case, 'constant', 'contactProperties'), None)['mu']
+    corn = case_entries(os.path.join(case, 'constant', 'materials'), 'corn')
+    mu = case_entries(os.path.join(case, 'constant', 'contactProperties'), None)['mu']
     out = subprocess.run(['picSokolovski', '-phi', corn['phi'], '-mu', mu, '-rho', corn['rho'],
                           '-h', repr(h)], capture_output=True, text=True, check=True).stdout
     row = next(line.split() for line in out.splitlines() if re.match(r'\s*\d+\.\d+\s+\d', line))
@@ -162,7 +145,7 @@ case = sys.argv[1]
 d0, d1 = option('-window', 2, [0.015, 0.035])
 t, fx1, fx2, travel = tool_forces(case, 'blade')
 fx1, fx2 = [-f for f in fx1], [-f for f in fx2]  # the force of the blade on the material
-h = depth(case)
+h = tool_depth(case)
 keep = [d0 - 1e-9 <= d <= d1 + 1e-9 for d in travel]
 F1, F2 = mean(t, fx1, keep), mean(t, fx2, keep)
 S1, S2, xs = sokolovski(h, case)

@@ -32,28 +32,8 @@ import sys
 sys.path.insert(0, os.path.join(os.environ.get('GPIC_DIR', '../../..'), 'etc', 'python'))
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import gpicdat  # noqa: E402
-from gpicdat import last_state, read_particles, read_series, window_mean  # noqa: E402
+from gpicdat import case_entries, last_state, read_series, tool_depth, window_mean  # noqa: E402
 from mckyesAli import forces as mckyes_ali  # noqa: E402
-
-
-def entries(path, name):
-    """Keyword values of the sub-dictionary `name` of a case file (or of the file itself)."""
-    text = re.sub(r'//[^\n]*', '', open(path).read())
-    if name:
-        text = re.search(r'\b' + name + r'\s*\{([^}]*)\}', text).group(1)
-    return dict(re.findall(r'(\w+)\s+([^;\s]+)\s*;', text))
-
-
-def depth(case):
-    """Top of the sand's particle domains less the blade's foot, along the last axis [m]."""
-    part = read_particles(os.path.join(case, '0', 'particles.vtp'))
-    up = len(part['Points'][0]) - 1
-    if up == 2 and all(abs(x[2]) < 1e-12 for x in part['Points']):
-        up = 1   # a plane case written with three coordinates
-    ys = [(b, x[up], s[up]) for b, x, s in zip(part['body'], part['Points'], part['halfSize'])]
-    surface = max(y + s for b, y, s in ys if b == 0)   # body 0: soil, body 1: blade
-    foot = min(y - s for b, y, s in ys if b == 1)
-    return surface - foot
 
 
 def sokolovski(h, phi, mu, rho):
@@ -80,9 +60,9 @@ keep = [d0 - 1e-9 <= d <= d1 + 1e-9 for d in travel]
 F1, F3 = window_mean(t, f1, keep), window_mean(t, f3, keep)
 if F1 is None:
     sys.exit(f'analyse.py: {case}: no forces in the window {d0 * 1e3:g} ... {d1 * 1e3:g} mm (did the run stop?)')
-h = depth(case)
-sand = entries(os.path.join(case, 'constant', 'materials'), 'sand')
-mu = entries(os.path.join(case, 'constant', 'contactProperties'), None)['mu']
+h = tool_depth(case)
+sand = case_entries(os.path.join(case, 'constant', 'materials'), 'sand')
+mu = case_entries(os.path.join(case, 'constant', 'contactProperties'), None)['mu']
 delta = math.degrees(math.atan(float(mu)))
 width = w if threeD else math.inf
 _, _, M1, M3 = mckyes_ali(float(sand['phi']), delta, float(sand['rho']), h, width)
