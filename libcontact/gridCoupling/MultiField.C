@@ -30,12 +30,12 @@ template <int D> void MultiField<D>::particlesToGrid(EngineView<D>& e, double t)
         BodyField<D>& body = bodies.field(p.body[q]);
         double* mass = body.mass.data();
         Vector* momentum = body.momentum.data();
+        const double m = e.inertialMass(q);  // m_p, or scaled (MassScaling.H)
         if (positions) {  // the separation check's nodal positions (MultiFieldContact.H)
             Vector* position = body.position.data();
             for (int a = 0; a < stride; ++a)
-                if (node[k0 + a] >= 0) position[node[k0 + a]] += (Nw[k0 + a] * e.inertialMass(q)) * p.x[q];
+                if (node[k0 + a] >= 0) position[node[k0 + a]] += (Nw[k0 + a] * m) * p.x[q];
         }
-        const double m = e.inertialMass(q);  // m_p, or scaled (MassScaling.H)
         const Vector vp = p.v[q];           // read once, not after every store (as SingleField)
         for (int a = 0; a < stride; ++a) {
             const int n = node[k0 + a];

@@ -198,7 +198,7 @@ template <int D> typename WeightedDriver<D>::Vector WeightedDriver<D>::linearVel
 template <int D> typename WeightedDriver<D>::Vector WeightedDriver<D>::velocity(double t, const Vector& x) const
 {
     const Vector v = linearVelocity(t);
-    return turns_ ? Vector(v + turnVelocity(omegaAt(t), x - centreAt(t))) : v;
+    return turns_ ? Vector(v + turnVelocity(omegaAt(t), x - (centre_ + (t - time_) * v))) : v;  // c(t), centreAt
 }
 
 template <int D> typename WeightedDriver<D>::Vector WeightedDriver<D>::move(double t, double dt, const Vector& x) const

@@ -20,17 +20,25 @@ std::vector<RigidBodyInfo<D>> RigidBodyInfo<D>::ofBodies(const Particles<D>& p, 
         if (b.mass > 0) b.velocity /= b.mass;
         b.gravity = gravity;
     }
-    // The points' own inertia and angular momentum give the spin (the inertia below adds each
-    // particle's domain, which a point's velocity does not turn).
-    using Moment = typename Space<D>::Moment;
+    // The spin comes from the points' own inertia and angular momentum: the inertia adds each
+    // particle's domain, which a point's velocity does not turn.
     std::vector<typename Space<D>::Inertia> pointInertia(nBodies, zeroInertia());
-    std::vector<Moment> momentum(nBodies, Space<D>::zeroMoment());
+    std::vector<typename Space<D>::Moment> momentum(nBodies, Space<D>::zeroMoment());
     for (std::size_t q = 0; q < p.size(); ++q) {
-        const auto b = p.body[q];
-        const Vector r = p.x[q] - info[b].centroid;
-        momentum[b] += p.m[q] * momentOf(r, p.v[q]);
-        if constexpr (D == 2) pointInertia[b] += p.m[q] * r.squaredNorm();
-        else pointInertia[b] += p.m[q] * (r.squaredNorm() * Space<3>::Inertia::Identity() - r * r.transpose()).eval();
+        auto& b = info[p.body[q]];
+        const Vector& a = p.halfSize[q];
+        const Vector r = p.x[q] - b.centroid;
+        momentum[p.body[q]] += p.m[q] * momentOf(r, p.v[q]);
+        if constexpr (D == 2) {
+            b.inertia += p.m[q] * (r.squaredNorm() + a.squaredNorm() / 3.0);
+            pointInertia[p.body[q]] += p.m[q] * r.squaredNorm();
+        } else {  // the point's parallel-axis term and its box of half-sizes a about its centre
+            const Vector a2 = a.cwiseProduct(a);
+            const Vector box(a2.y() + a2.z(), a2.x() + a2.z(), a2.x() + a2.y());
+            const Space<3>::Inertia point = (r.squaredNorm() * Space<3>::Inertia::Identity() - r * r.transpose()).eval();
+            b.inertia += p.m[q] * (point + Space<3>::Inertia(box.asDiagonal()) / 3.0);
+            pointInertia[p.body[q]] += p.m[q] * point;
+        }
     }
     for (std::size_t b = 0; b < nBodies; ++b) {
         if constexpr (D == 2) {
@@ -38,19 +46,6 @@ std::vector<RigidBodyInfo<D>> RigidBodyInfo<D>::ofBodies(const Particles<D>& p, 
         } else {
             const Eigen::FullPivLU<Space<3>::Inertia> lu(pointInertia[b]);
             if (lu.rank() == 3) info[b].angularVelocity = lu.solve(momentum[b]);  // none for points on a line
-        }
-    }
-    for (std::size_t q = 0; q < p.size(); ++q) {
-        auto& b = info[p.body[q]];
-        const Vector& a = p.halfSize[q];
-        const Vector r = p.x[q] - b.centroid;
-        if constexpr (D == 2) {
-            b.inertia += p.m[q] * (r.squaredNorm() + a.squaredNorm() / 3.0);
-        } else {  // the point's parallel-axis term and its box of half-sizes a about its centre
-            const Vector a2 = a.cwiseProduct(a);
-            const Vector box(a2.y() + a2.z(), a2.x() + a2.z(), a2.x() + a2.y());
-            b.inertia += p.m[q] * ((r.squaredNorm() * Space<3>::Inertia::Identity() - r * r.transpose()).eval() +
-                                   Space<3>::Inertia(box.asDiagonal()) / 3.0);
         }
     }
     return info;
