@@ -73,6 +73,7 @@ foreach(tutorial "verification/elasticBar;bar.png;error.png"
                  "earthmoving/cornBlade;force.png;error.png"
                  "earthmoving/cornBladeTurned;band.png;force.png"
                  "earthmoving/bucket;force.png;error.png;bucket.png"
+                 "earthmoving/bucket3D;force.png;parts.png;fill.png"
                  "earthmoving/silos;mass.png;layers-end.png;error.png"
                  "materials/oedometerPoint;oedometer.png"
                  "materials/muIPoint;muI.png"
@@ -88,7 +89,7 @@ foreach(tutorial "verification/elasticBar;bar.png;error.png"
   list(GET tutorial 0 path)
   if(NOT GPIC_WITH_3D AND (path STREQUAL "geotechnics/cylinderCollapse" OR path STREQUAL "verification/stlVolumes"
                            OR path STREQUAL "contact/inclinedSphere" OR path STREQUAL "earthmoving/circularSilo3D"
-                           OR path STREQUAL "geotechnics/bladeWidth"))
+                           OR path STREQUAL "geotechnics/bladeWidth" OR path STREQUAL "earthmoving/bucket3D"))
     continue()  # a 3D case: a plane build refuses it
   endif()
   list(SUBLIST tutorial 1 -1 plots)

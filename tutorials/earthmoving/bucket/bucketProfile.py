@@ -82,6 +82,19 @@ def place(pts, t, x0, y0):
     return [((x + t) * 1e-3 + x0, (y + t) * 1e-3 + y0) for x, y in pts]
 
 
+def corn_bed(t, x0, y0, width, depth):
+    """The bed 0 <= x <= width, 0 <= y <= depth [m] with the tooth's notch cut out,
+    counter-clockwise; t [mm], the bucket placed at (x0, y0) as by place()."""
+    _, tip_top, tip_bot, under = outline(t)
+    a = math.radians(ANGLE)
+    # where the tooth's top face crosses the corn's surface (the floor's underside)
+    s = t / math.sin(a)
+    cross = (FLOOR + s * math.cos(a), -t)
+    notch = place([cross, tip_top, tip_bot, under], t, x0, y0)
+    notch = [(x, min(y, depth)) for x, y in notch]
+    return [(0.0, 0.0), (width, 0.0), (width, depth)] + notch + [(0.0, depth)]
+
+
 def fmt(pts):
     return '(' + ' '.join(f'({x:.6f} {y:.6f})' for x, y in pts) + ')'
 
@@ -104,14 +117,7 @@ def main(argv):
                 f.write(f'{x:.2f} {y:.2f}\n')
     if '-corn' in argv:
         k = argv.index('-corn')
-        width, depth = float(argv[k + 1]), float(argv[k + 2])
-        a = math.radians(ANGLE)
-        # where the tooth's top face crosses the corn's surface (the floor's underside)
-        s = t / math.sin(a)
-        cross = (FLOOR + s * math.cos(a), -t)
-        notch = place([cross, tip_top, tip_bot, under], t, x0, y0)
-        notch = [(x, min(y, depth)) for x, y in notch]
-        print(fmt([(0.0, 0.0), (width, 0.0), (width, depth)] + notch + [(0.0, depth)]))
+        print(fmt(corn_bed(t, x0, y0, float(argv[k + 1]), float(argv[k + 2]))))
     elif '-rho' in argv:
         m = float(argv[argv.index('-rho') + 1])
         q = place(pts, t, 0.0, 0.0)
