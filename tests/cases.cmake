@@ -133,6 +133,12 @@ endforeach()
 # Slurm's daemons want the machine's cores: not beside another test that would take them.
 set_tests_properties(studyLocalSlurm PROPERTIES RUN_SERIAL TRUE)
 
+# picDecompose and picReconstruct: the round trip of a plane and a 3D case by each method
+# (tests/scripts/decomposeReconstruct.sh).
+add_test(NAME decomposeReconstruct
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/scripts/decomposeReconstruct.sh ${PROJECT_SOURCE_DIR} ${PROJECT_BINARY_DIR})
+set_tests_properties(decomposeReconstruct PROPERTIES TIMEOUT 300 LABELS integration)
+
 # One writer per case: a second run refused, a stale lock taken over (tests/scripts/caseLock.sh).
 add_test(NAME caseLock
          COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/scripts/caseLock.sh ${PROJECT_SOURCE_DIR} ${PROJECT_BINARY_DIR})

@@ -56,12 +56,14 @@ BUILT = {
     # the header every dictionary file may have (Dictionary::headerKeyword)
     "FoamFile",
 }
-# What the code writes under <time>/uniform/ and reads back on a restart: not case keywords.
+# What the code writes (under <time>/uniform/, a decomposition's cellDecomposition) and reads
+# back: not case keywords.
 STATE = {"stage", "index", "begun", "progress", "clock", "startStep",  # uniform/stage
          "top", "removed", "band",                                       # excavate's progress
          "lastTime", "lastRemoved", "lastMass", "work",                  # functionObjects' state
          "removedMass",                                                  # uniform/time
-         "handle", "reference", "travel", "last", "volume", "layers"}     # toolFill, toolWear, excavate
+         "handle", "reference", "travel", "last", "volume", "layers",     # toolFill, toolWear, excavate
+         "owner"}                                    # processor<N>/constant/cellDecomposition (picDecompose)
 # Kinds chosen by the scene itself, never by a keyword of a case file.
 INTERNAL_KINDS = {"gridCoupling"}
 # The guide pages whose keyword tables are checked.

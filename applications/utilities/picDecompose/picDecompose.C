@@ -1,0 +1,123 @@
+// picDecompose: splits a case into subdomains for a parallel run, as OpenFOAM's decomposePar:
+// reads system/decomposeParDict, gives every cell of the grid an owner (parallel/
+// Decomposition.H) and writes processor<N>/constant/cellDecomposition and each
+// subdomain's particles of the chosen time, processor<N>/<time>/particles.vtp, with the
+// rest of that time directory (uniform/, the tools' surfaces). Prints each subdomain's
+// particles and cells and the imbalance. doc/parallel.md.
+#include "applicationMain.H"
+#include "TimeSelection.H"
+#include "case/CaseFiles.H"
+#include "core/CaseLock.H"
+#include "dictionary/Dictionary.H"
+#include "grid/Grid.H"
+#include "io/ParticlesVtk.H"
+#include "parallel/CellDecompositionFile.H"
+#include "parallel/Decomposition.H"
+#include "particles/Particles.H"
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+//- The processor<N> directories of a case, N = 0, 1, ... as long as they follow on.
+std::vector<fs::path> processorDirs(const std::string& caseDir)
+{
+    std::vector<fs::path> dirs;
+    for (int k = 0; fs::is_directory(fs::path(caseDir) / ("processor" + std::to_string(k))); ++k)
+        dirs.push_back(fs::path(caseDir) / ("processor" + std::to_string(k)));
+    return dirs;
+}
+
+template <int D> void decompose(const std::string& caseDir, const std::string& time, bool force)
+{
+    const gpic::Dictionary gridDict = gpic::readCaseFile(caseDir, "constant/grid");
+    const gpic::Grid<D> grid(gridDict);
+    const gpic::Dictionary parDict = gpic::readCaseFile(caseDir, "system/decomposeParDict");
+    const gpic::DecompositionSettings settings = gpic::readDecomposeParDict(parDict, D);
+
+    gpic::Particles<D> particles;
+    double t = 0;
+    std::vector<std::string> materials, bodies;
+    const fs::path timeDir = fs::path(caseDir) / time;
+    gpic::readParticles((timeDir / "particles.vtp").string(), particles, t, &materials, &bodies);
+    std::vector<int> cellOf(particles.size()), perCell(static_cast<std::size_t>(grid.nCells()), 0);
+    for (std::size_t p = 0; p < particles.size(); ++p) {
+        if (!grid.contains(particles.x[p]))
+            throw gpic::InputError((timeDir / "particles.vtp").string(), 0,
+                                   "particle " + std::to_string(particles.id[p]) + " lies outside the grid");
+        cellOf[p] = gpic::cellNumber(grid, grid.cellOf(particles.x[p]));
+        ++perCell[cellOf[p]];
+    }
+    gpic::CellDecomposition decomposition{settings.subdomains, gpic::decomposeCells(grid, perCell, settings)};
+
+    // Never over an earlier decomposition unless asked: its time directories may be a run's.
+    const auto existing = processorDirs(caseDir);
+    if (!existing.empty() && !force)
+        throw gpic::InputError("", 0, existing.front().string() + " exists: the case is decomposed already "
+                                      "(picDecompose -force removes every processor<N> first)");
+    for (const auto& dir : existing) fs::remove_all(dir);
+
+    std::vector<std::vector<std::size_t>> members(static_cast<std::size_t>(settings.subdomains));
+    for (std::size_t p = 0; p < particles.size(); ++p) members[decomposition.owner[cellOf[p]]].push_back(p);
+    std::vector<int> cells(static_cast<std::size_t>(settings.subdomains), 0);
+    for (int o : decomposition.owner) ++cells[o];
+    for (int k = 0; k < settings.subdomains; ++k) {
+        const fs::path proc = fs::path(caseDir) / ("processor" + std::to_string(k));
+        fs::create_directories(proc / "constant");
+        gpic::writeCellDecomposition((proc / "constant" / "cellDecomposition").string(), decomposition);
+        // The time directory is built apart and renamed: a stopped decomposition leaves no
+        // time that a run would start from.
+        const fs::path tmp = proc / ("." + time + ".tmp");
+        fs::create_directories(tmp);
+        for (const auto& entry : fs::directory_iterator(timeDir)) {
+            const std::string name = entry.path().filename().string();
+            if (name == "particles.vtp" || name == "grid.vti") continue;  // the grid's fields are each rank's own
+            fs::copy(entry.path(), tmp / name, fs::copy_options::recursive);
+        }
+        gpic::Particles<D> mine = particles;
+        mine.reorder(members[k]);
+        gpic::writeParticles((tmp / "particles.vtp").string(), mine, t, materials, bodies);
+        fs::rename(tmp, proc / time);
+    }
+    std::size_t most = 0;
+    std::printf("%-10s %10s %8s\n", "subdomain", "particles", "cells");
+    for (int k = 0; k < settings.subdomains; ++k) {
+        std::printf("%-10d %10zu %8d\n", k, members[k].size(), cells[k]);
+        most = std::max(most, members[k].size());
+    }
+    const double mean = static_cast<double>(particles.size()) / settings.subdomains;
+    std::printf("%zu particles of time %s in %d subdomains, method %s; largest/mean %.3f\n", particles.size(),
+                time.c_str(), settings.subdomains, parDict.get<std::string>("method").c_str(),
+                mean > 0 ? static_cast<double>(most) / mean : 1.0);
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    namespace po = boost::program_options;
+    po::options_description options("picDecompose options");
+    options.add_options()("time", po::value<double>(), "this time directory (default: the latest)")(
+        "force", "remove the processor<N> directories of an earlier decomposition first");
+    return gpic::applicationMain(
+        argc, argv, "picDecompose: split a case into subdomains (system/decomposeParDict) for a parallel run",
+        options, [](const po::variables_map& vm) {
+            const std::string dir = vm["case"].as<std::string>();
+            const std::string time = vm.count("time") ? gpic::findTime(dir, vm["time"].as<double>()) : gpic::latestTime(dir);
+            gpic::CaseLock lock(dir, "picDecompose");
+            if (gpic::caseDimension(gpic::readCaseFile(dir, "constant/grid")) == 3) {
+#if GPIC_WITH_3D
+                decompose<3>(dir, time, vm.count("force") > 0);
+#else
+                gpic::refusePlaneBuild(gpic::readCaseFile(dir, "constant/grid"));
+#endif
+            } else {
+                decompose<2>(dir, time, vm.count("force") > 0);
+            }
+        });
+}

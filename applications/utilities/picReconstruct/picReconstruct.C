@@ -1,0 +1,119 @@
+// picReconstruct: merges the time directories of a decomposed case back into the case, as
+// OpenFOAM's reconstructPar: the particles of every processor<N>/<time>/particles.vtp in one
+// <time>/particles.vtp, ordered by particle id, with the rest of processor0's time directory
+// (uniform/, the tools' surfaces), and the times added to <case>.pvd. A time the case holds
+// already is left as it is (said so). doc/parallel.md.
+#include "applicationMain.H"
+#include "case/CaseFiles.H"
+#include "core/CaseLock.H"
+#include "io/ParticlesVtk.H"
+#include "io/PvdCollection.H"
+#include "io/TimeDirectories.H"
+#include "particles/Particles.H"
+
+#include <algorithm>
+#include <filesystem>
+#include <iostream>
+#include <numeric>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::vector<fs::path> processorDirs(const std::string& caseDir)
+{
+    std::vector<fs::path> dirs;
+    for (int k = 0; fs::is_directory(fs::path(caseDir) / ("processor" + std::to_string(k))); ++k)
+        dirs.push_back(fs::path(caseDir) / ("processor" + std::to_string(k)));
+    return dirs;
+}
+
+template <int D>
+void reconstruct(const std::string& caseDir, const std::vector<fs::path>& procs, const std::string& time)
+{
+    gpic::Particles<D> all;
+    double t = 0;
+    std::vector<std::string> materials, bodies;
+    for (std::size_t k = 0; k < procs.size(); ++k) {
+        const std::string path = (procs[k] / time / "particles.vtp").string();
+        if (!fs::exists(path))
+            throw gpic::InputError(path, 0, "missing: every processor<N> must hold time " + time);
+        gpic::Particles<D> piece;
+        double tk = 0;
+        std::vector<std::string> m, b;
+        gpic::readParticles(path, piece, tk, &m, &b);
+        if (k == 0) {
+            t = tk, materials = m, bodies = b;
+            all = std::move(piece);
+            continue;
+        }
+        if (m != materials || b != bodies || tk != t)
+            throw gpic::InputError(path, 0, "its time, materials or bodies differ from " +
+                                                (procs[0] / time / "particles.vtp").string() + "'s");
+        all.append(piece);
+    }
+    // One order whatever the decomposition: by particle id, each id once.
+    std::vector<std::size_t> order(all.size());
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return all.id[a] < all.id[b]; });
+    for (std::size_t k = 1; k < order.size(); ++k)
+        if (all.id[order[k]] == all.id[order[k - 1]])
+            throw gpic::InputError((procs[0] / time).string(), 0,
+                                   "particle " + std::to_string(all.id[order[k]]) + " is in two subdomains");
+    all.reorder(order);
+    gpic::writeTimeDirectoryAtomically(caseDir, time, [&](const std::string& tmp) {
+        for (const auto& entry : fs::directory_iterator(procs[0] / time)) {
+            const std::string name = entry.path().filename().string();
+            if (name == "particles.vtp" || name == "grid.vti") continue;
+            fs::copy(entry.path(), fs::path(tmp) / name, fs::copy_options::recursive);
+        }
+        gpic::writeParticles((fs::path(tmp) / "particles.vtp").string(), all, t, materials, bodies);
+    });
+    gpic::PvdCollection pvd(gpic::pvdPath(caseDir));
+    const auto stored = gpic::readStoredTime(caseDir, time);
+    pvd.add(stored ? stored->value : t, time + "/particles.vtp", 0);
+    pvd.write();
+    std::cout << time << ": " << all.size() << " particles from " << procs.size() << " subdomains\n";
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    namespace po = boost::program_options;
+    po::options_description options("picReconstruct options");
+    options.add_options()("time", po::value<double>(), "this time only (default: every time of processor0)")(
+        "latestTime", "the latest time of processor0 only");
+    return gpic::applicationMain(
+        argc, argv, "picReconstruct: merge the processor<N> time directories of a parallel run into the case",
+        options, [](const po::variables_map& vm) {
+            const std::string dir = vm["case"].as<std::string>();
+            const auto procs = processorDirs(dir);
+            if (procs.empty()) throw gpic::InputError("", 0, dir + " holds no processor0: nothing to reconstruct "
+                                                              "(picDecompose splits a case)");
+            std::vector<std::string> times;
+            if (vm.count("time"))
+                times.push_back(gpic::findTime(procs[0].string(), vm["time"].as<double>()));
+            else if (vm.count("latestTime"))
+                times.push_back(gpic::latestTime(procs[0].string()));
+            else
+                for (const auto& [t, name] : gpic::listTimeDirectories(procs[0].string())) times.push_back(name);
+            gpic::CaseLock lock(dir, "picReconstruct");
+            const int dimension = gpic::caseDimension(gpic::readCaseFile(dir, "constant/grid"));
+            for (const auto& time : times) {
+                if (fs::exists(fs::path(dir) / time)) {
+                    std::cout << time << ": the case holds it already, left as it is\n";
+                    continue;
+                }
+                if (dimension == 3) {
+#if GPIC_WITH_3D
+                    reconstruct<3>(dir, procs, time);
+#else
+                    gpic::refusePlaneBuild(gpic::readCaseFile(dir, "constant/grid"));
+#endif
+                } else {
+                    reconstruct<2>(dir, procs, time);
+                }
+            }
+        });
+}
