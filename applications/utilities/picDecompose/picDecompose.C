@@ -13,6 +13,7 @@
 #include "io/ParticlesVtk.H"
 #include "parallel/CellDecompositionFile.H"
 #include "parallel/Decomposition.H"
+#include "parallel/ProcessorDirectories.H"
 #include "particles/Particles.H"
 
 #include <algorithm>
@@ -23,15 +24,6 @@
 namespace {
 
 namespace fs = std::filesystem;
-
-//- The processor<N> directories of a case, N = 0, 1, ... as long as they follow on.
-std::vector<fs::path> processorDirs(const std::string& caseDir)
-{
-    std::vector<fs::path> dirs;
-    for (int k = 0; fs::is_directory(fs::path(caseDir) / ("processor" + std::to_string(k))); ++k)
-        dirs.push_back(fs::path(caseDir) / ("processor" + std::to_string(k)));
-    return dirs;
-}
 
 template <int D> void decompose(const std::string& caseDir, const std::string& time, bool force)
 {
@@ -56,7 +48,7 @@ template <int D> void decompose(const std::string& caseDir, const std::string& t
     gpic::CellDecomposition decomposition{settings.subdomains, gpic::decomposeCells(grid, perCell, settings)};
 
     // Never over an earlier decomposition unless asked: its time directories may be a run's.
-    const auto existing = processorDirs(caseDir);
+    const auto existing = gpic::processorDirectories(caseDir);
     if (!existing.empty() && !force)
         throw gpic::InputError("", 0, existing.front().string() + " exists: the case is decomposed already "
                                       "(picDecompose -force removes every processor<N> first)");

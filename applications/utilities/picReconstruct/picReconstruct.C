@@ -9,6 +9,7 @@
 #include "io/ParticlesVtk.H"
 #include "io/PvdCollection.H"
 #include "io/TimeDirectories.H"
+#include "parallel/ProcessorDirectories.H"
 #include "particles/Particles.H"
 
 #include <algorithm>
@@ -19,14 +20,6 @@
 namespace {
 
 namespace fs = std::filesystem;
-
-std::vector<fs::path> processorDirs(const std::string& caseDir)
-{
-    std::vector<fs::path> dirs;
-    for (int k = 0; fs::is_directory(fs::path(caseDir) / ("processor" + std::to_string(k))); ++k)
-        dirs.push_back(fs::path(caseDir) / ("processor" + std::to_string(k)));
-    return dirs;
-}
 
 template <int D>
 void reconstruct(const std::string& caseDir, const std::vector<fs::path>& procs, const std::string& time)
@@ -88,7 +81,7 @@ int main(int argc, char** argv)
         argc, argv, "picReconstruct: merge the processor<N> time directories of a parallel run into the case",
         options, [](const po::variables_map& vm) {
             const std::string dir = vm["case"].as<std::string>();
-            const auto procs = processorDirs(dir);
+            const auto procs = gpic::processorDirectories(dir);
             if (procs.empty()) throw gpic::InputError("", 0, dir + " holds no processor0: nothing to reconstruct "
                                                               "(picDecompose splits a case)");
             std::vector<std::string> times;
