@@ -139,6 +139,14 @@ add_test(NAME decomposeReconstruct
          COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/scripts/decomposeReconstruct.sh ${PROJECT_SOURCE_DIR} ${PROJECT_BINARY_DIR})
 set_tests_properties(decomposeReconstruct PROPERTIES TIMEOUT 300 LABELS integration)
 
+# picSolver -parallel under mpirun against the serial run, a plane and a 3D case
+# (tests/scripts/parallelRun.sh; oversubscribed on the 2-core CI machine).
+if(GPIC_WITH_MPI AND GPIC_WITH_3D)
+  add_test(NAME parallelRun
+           COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/scripts/parallelRun.sh ${PROJECT_SOURCE_DIR} ${PROJECT_BINARY_DIR})
+  set_tests_properties(parallelRun PROPERTIES TIMEOUT 300 LABELS integration)
+endif()
+
 # One writer per case: a second run refused, a stale lock taken over (tests/scripts/caseLock.sh).
 add_test(NAME caseLock
          COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/scripts/caseLock.sh ${PROJECT_SOURCE_DIR} ${PROJECT_BINARY_DIR})

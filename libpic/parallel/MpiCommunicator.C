@@ -5,6 +5,7 @@
 #include <mpi.h>
 
 #include <cstdlib>
+#include <exception>
 #include <stdexcept>
 #include <string>
 
@@ -32,6 +33,9 @@ public:
     }
     ~MpiCommunicator() override
     {
+        // A rank that fails leaves without MPI_Finalize, which would wait for the others:
+        // mpirun then ends the whole job with that rank's exit status and its message.
+        if (std::uncaught_exceptions() > 0) return;
         int finalized = 0;
         MPI_Finalized(&finalized);
         if (owner_ && !finalized) MPI_Finalize();

@@ -70,7 +70,9 @@ template <int D> std::size_t SharedNodes<D>::sharedCount() const
     return count;
 }
 
-template <int D> void SharedNodes<D>::complete(double* field, int components, const Communicator& comm) const
+template <int D>
+void SharedNodes<D>::complete(double* field, int components, const Communicator& comm,
+                              const std::function<bool(int)>& written) const
 {
     const std::size_t width = static_cast<std::size_t>(components) * sizeof(double);
     std::vector<std::vector<char>> send(peers_.size());
@@ -82,6 +84,7 @@ template <int D> void SharedNodes<D>::complete(double* field, int components, co
     const auto received = comm.exchange(peers_, send);
     std::vector<double> own(static_cast<std::size_t>(components)), value(static_cast<std::size_t>(components));
     for (std::size_t s = 0; s < sharedNodes_.size(); ++s) {
+        if (written && !written(sharedNodes_[s])) continue;
         double* node = field + static_cast<std::size_t>(sharedNodes_[s]) * components;
         std::copy(node, node + components, own.begin());
         bool first = true;

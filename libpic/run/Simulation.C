@@ -11,6 +11,7 @@
 #include "io/ParticlesVtk.H"
 #include "io/PvdCollection.H"
 #include "io/TimeDirectories.H"
+#include "parallel/CellDecompositionFile.H"
 #include "run/WriteBudget.H"
 
 #include <algorithm>
@@ -70,6 +71,7 @@ Simulation<D>::Simulation(const RunOptions& options, std::unique_ptr<Case<D>> c)
                 ? "measured at a wall's foot with volumetricStrain cellMean, which damping does not cure: use "
                   "volumetricStrain particle in system/mpmSchemes"
                 : "a quasi-static push needs damping 0.1 in system/controlDict");
+    if (options_.communicator) setUpParallel();
     // Every keyword has been read by now: what is left is a typo or a leftover.
     case_->warnUnused();
 
@@ -80,6 +82,36 @@ Simulation<D>::Simulation(const RunOptions& options, std::unique_ptr<Case<D>> c)
     if (const ContactPass<D>* contact = solver_.contact())
         log() << "Contact pass: " << contact->nBodies() << " bodies with their own velocity fields, "
               << contact->summary() << "\n";
+}
+
+template <int D>
+void Simulation<D>::setUpParallel()
+{
+    // What a parallel run does not do yet (doc/parallel.md): one line each, before any step.
+    const auto refuse = [](const std::string& file, const std::string& what) {
+        throw InputError(file, 0, what + ": not yet in a parallel run (doc/parallel.md); run it without -parallel");
+    };
+    if (case_->stages) refuse("system/controlDict", "stages");
+    if (!case_->functions.empty()) refuse("system/controlDict", "function objects (functions)");
+    for (std::size_t b = 0; b < case_->context.bodyNames.size(); ++b)
+        if (solver_.rigidBody(static_cast<int>(b))) refuse("constant/rigidBodies", "rigid bodies");
+    if (solver_.contact()) refuse("constant/contactProperties", "contact between bodies");
+    if (case_->hasLoads) refuse("constant/loads", "applied loads");
+    if (case_->volumetricStrainName == "cellMean") refuse("system/mpmSchemes", "volumetricStrain cellMean");
+    if (solver_.particles().carries(FieldGroup::affine) || case_->schemes.template getOrDefault<std::string>("transfer", "FLIP") == "XPIC")
+        refuse("system/mpmSchemes", "transfer APIC and XPIC");
+    if (solver_.particles().carries(FieldGroup::polar)) refuse("constant/materials", "polar (Cosserat) materials");
+    const Communicator& comm = *options_.communicator;
+    // The layers of nodes beyond its cell a particle reaches: k nodes per axis, (k - 1) / 2.
+    int perAxis = 1;
+    while (std::pow(perAxis + 1, D) <= solver_.nodesPerParticle() + 0.5) ++perAxis;
+    const Grid<D>& grid = solver_.grid();
+    const std::string file = (fs::path(options_.caseDir) / "constant" / "cellDecomposition").string();
+    parallel_ = std::make_unique<ParallelRun<D>>(comm, grid, readCellDecomposition(file, grid.nCells()), (perAxis - 1) / 2);
+    solver_.setNodalSums(parallel_.get());
+    guard_->sumOverRanks([&comm](std::vector<double>& v) { comm.sumInRankOrder(v); });
+    log() << "Parallel run: rank " << comm.rank() << " of " << comm.size() << ", " << solver_.particles().size()
+          << " particles here, " << parallel_->sharedValues() << " node values shared with the neighbours per exchange\n";
 }
 
 template <int D>
@@ -202,7 +234,7 @@ void Simulation<D>::stop(const std::optional<StabilityTrip>& trip, const std::st
             const std::string name = times_.nameFor(good.time);
             Particles<D> particles = good.particles();  // read back once, for both files
             writeState(particles, good.time, good.step, good.deltaT, good.removedMass, name);
-            if (case_->writeGrid)
+            if (case_->writeGrid && !parallel_)  // projecting would wait for the other ranks
                 writeGoodStateGrid(std::move(particles), good.time,
                                    (fs::path(options_.caseDir) / name / "grid.vti").string());
             times_.writtenOutOfTurn(good.time, good.step, name);
@@ -326,12 +358,13 @@ void Simulation<D>::takeStep()
     try {
         solver_.setTime(time_);
         const double noStage = std::numeric_limits<double>::infinity();
-        deltaT_ = case_->timeControl->deltaT(time_, solver_.criticalTimeStep(),
-                                             case_->stages ? case_->stages->landOn() : noStage);
+        const double critical = parallel_ ? parallel_->min(solver_.criticalTimeStep()) : solver_.criticalTimeStep();
+        deltaT_ = case_->timeControl->deltaT(time_, critical, case_->stages ? case_->stages->landOn() : noStage);
         // At fixed step indices, so that a restart sorts exactly as the straight run.
         if (case_->sortInterval > 0 && step_ % case_->sortInterval == 0) solver_.sortParticles();
         case_->scheme->advance(solver_, deltaT_);
         solver_.endStep(deltaT_);
+        if (parallel_) parallel_->migrate(solver_);  // the guard's account is over every rank
     } catch (const RunError& e) {
         // The particle to blame, where the guard finds one in what the solver left.
         stop(guard_->diagnose(time_, step_ + 1, deltaT_),
@@ -441,8 +474,11 @@ template class Simulation<2>;
 template class Simulation<3>;
 #endif
 
-long runCase(const RunOptions& options)
+long runCase(const RunOptions& given)
 {
+    RunOptions options = given;
+    if (options.communicator)  // each rank runs its subdomain, as picDecompose wrote it
+        options.caseDir = (fs::path(given.caseDir) / ("processor" + std::to_string(options.communicator->rank()))).string();
     const Dictionary grid = readCaseFile(options.caseDir, "constant/grid");
     const CaseLock lock(options.caseDir, "picSolver");  // one run writes a case at a time
     if (caseDimension(grid) == 3) {

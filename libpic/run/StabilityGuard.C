@@ -98,6 +98,12 @@ typename StabilityGuard<D>::Survey StabilityGuard<D>::survey() const
     s.work = work;
     s.gravity = gravity;
     s.speed2 = speed2;
+    s.count = static_cast<double>(n);
+    if (addRanks_) {
+        std::vector<double> sums{s.kinetic, s.work, s.gravity, s.count};
+        addRanks_(sums);
+        s.kinetic = sums[0], s.work = sums[1], s.gravity = sums[2], s.count = sums[3];
+    }
     return s;
 }
 
@@ -145,7 +151,7 @@ void StabilityGuard<D>::start(double t, long step, const std::string& onDisk)
     gravity0_ = gravityPrevious_ = s.gravity;
     externalWork_ = 0;
     createdBefore_ = created_ = 0;
-    particleCount_ = solver_.particles().size();
+    particleCount_ = s.count;
     // Elastic energy held at the start (an initial or restarted stress): sum V |sigma|^2 /
     // (2 rho c^2), rho c^2 the P-wave modulus; a scale, not an exact value.
     const Particles<D>& p = solver_.particles();
@@ -165,6 +171,11 @@ void StabilityGuard<D>::start(double t, long step, const std::string& onDisk)
     }
     // A floor for a scene that starts at rest, unstressed and weightless: motion of a
     // millionth of the wave speed.
+    if (addRanks_) {
+        std::vector<double> sums{elastic, mass};
+        addRanks_(sums);
+        elastic = sums[0], mass = sums[1];
+    }
     const double floor = 0.5 * mass * (1e-6 * cMax) * (1e-6 * cMax);
     budget_ = s.kinetic + elastic + floor;
     // Rigid bodies alone: no material energy to account, only round-off in the bodies' loads.
@@ -236,7 +247,7 @@ std::optional<StabilityTrip> StabilityGuard<D>::check(double t, long step, doubl
     if (s.outside < n) return StabilityTrip{describeOutside(s.outside, t, step, dt) + note(), false};
 
     // Energy account.
-    if (n != particleCount_ || restartPending_) {
+    if (s.count != particleCount_ || restartPending_) {
         // Particles left or came (outflow, inflow): their energy is no work done. Start the
         // account again from here, keeping what the steps created so far and the budget.
         createdBefore_ = created_;
@@ -244,7 +255,7 @@ std::optional<StabilityTrip> StabilityGuard<D>::check(double t, long step, doubl
         work0_ = s.work;
         gravity0_ = gravityPrevious_ = s.gravity;
         externalWork_ = 0;
-        particleCount_ = n;
+        particleCount_ = s.count;
         restartPending_ = false;
     } else {
         const double external = loadWork(dt) + rigidWork(t, dt);

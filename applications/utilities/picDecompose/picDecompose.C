@@ -1,8 +1,9 @@
 // picDecompose: splits a case into subdomains for a parallel run, as OpenFOAM's decomposePar:
 // reads system/decomposeParDict, gives every cell of the grid an owner (parallel/
-// Decomposition.H) and writes processor<N>/constant/cellDecomposition and each
-// subdomain's particles of the chosen time, processor<N>/<time>/particles.vtp, with the
-// rest of that time directory (uniform/, the tools' surfaces). Prints each subdomain's
+// Decomposition.H) and writes each subdomain as a case of its own for its rank: processor<N>/
+// with the case's system/ and constant/, constant/cellDecomposition, and the subdomain's
+// particles of the chosen time, processor<N>/<time>/particles.vtp, with the rest of that
+// time directory (uniform/, the tools' surfaces). Prints each subdomain's
 // particles and cells and the imbalance. doc/parallel.md.
 #include "applicationMain.H"
 #include "TimeSelection.H"
@@ -60,7 +61,11 @@ template <int D> void decompose(const std::string& caseDir, const std::string& t
     for (int o : decomposition.owner) ++cells[o];
     for (int k = 0; k < settings.subdomains; ++k) {
         const fs::path proc = fs::path(caseDir) / ("processor" + std::to_string(k));
-        fs::create_directories(proc / "constant");
+        // Each subdomain a case of its own for its rank (picSolver -parallel): the case's
+        // dictionaries and surfaces, and the owners of the cells.
+        fs::create_directories(proc);
+        fs::copy(fs::path(caseDir) / "system", proc / "system", fs::copy_options::recursive);
+        fs::copy(fs::path(caseDir) / "constant", proc / "constant", fs::copy_options::recursive);
         gpic::writeCellDecomposition((proc / "constant" / "cellDecomposition").string(), decomposition);
         // The time directory is built apart and renamed: a stopped decomposition leaves no
         // time that a run would start from.
