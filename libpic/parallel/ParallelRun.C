@@ -27,23 +27,28 @@ template <class T> double* values(std::vector<T>& field) { return reinterpret_ca
 
 } // namespace
 
+template <int D> void ParallelRun<D>::complete(Grid<D>& grid, double* field, int components) const
+{
+    shared_.complete(field, components, comm_, [&grid](int n) { return grid.isActive(n); });
+    nodalBytes_ += static_cast<double>(shared_.sharedCount() * components * sizeof(double));
+    ++exchanges_;
+}
+
 template <int D> void ParallelRun<D>::completeMassAndMomentum(Grid<D>& grid) const
 {
-    const auto touched = [&grid](int n) { return grid.isActive(n); };
-    shared_.complete(values(grid.mass), 1, comm_, touched);
-    shared_.complete(values(grid.momentum), D, comm_, touched);
+    complete(grid, values(grid.mass), 1);
+    complete(grid, values(grid.momentum), D);
 }
 
 template <int D> void ParallelRun<D>::completeMomentum(Grid<D>& grid) const
 {
-    shared_.complete(values(grid.momentum), D, comm_, [&grid](int n) { return grid.isActive(n); });
+    complete(grid, values(grid.momentum), D);
 }
 
 template <int D> void ParallelRun<D>::completeForces(Grid<D>& grid) const
 {
-    const auto touched = [&grid](int n) { return grid.isActive(n); };
-    shared_.complete(values(grid.fInt), D, comm_, touched);
-    shared_.complete(values(grid.fExt), D, comm_, touched);
+    complete(grid, values(grid.fInt), D);
+    complete(grid, values(grid.fExt), D);
 }
 
 template <int D> bool ParallelRun<D>::migrate(MpmSolver<D>& solver)

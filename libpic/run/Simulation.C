@@ -466,6 +466,13 @@ void Simulation<D>::reportEnd(double wall, long steps, double particleUpdates)
     if (solver_.wallReturns() > 0)
         log() << "Walls: " << solver_.wallReturns()
               << " particle positions put back on a wall side they had passed by less than half a cell\n";
+    if (parallel_)
+        log() << "Parallel run: rank " << parallel_->communicator().rank() << " handed " << parallel_->particlesSent()
+              << " particles to its neighbours and took " << parallel_->particlesReceived() << "; "
+              << parallel_->sharedValues() << " node values shared, "
+              << (steps > 0 ? parallel_->nodalBytesSent() / static_cast<double>(steps) : 0.0) << " bytes sent per step in "
+              << (steps > 0 ? static_cast<double>(parallel_->nodalExchanges()) / static_cast<double>(steps) : 0.0)
+              << " exchanges\n";
     solver_.timers().print(log());
 }
 

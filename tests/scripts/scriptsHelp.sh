@@ -7,7 +7,7 @@
 # Usage: scriptsHelp.sh <source dir> <binary dir>
 . "$(dirname "$0")/scratchRun.sh" "$@"
 cd "$source_dir"
-scripts="Allrun Alltest Allclean etc/build etc/installDependencies bench/run tutorials/Allvalidate
+scripts="Allrun Alltest Allclean etc/build etc/installDependencies bench/run bench/parallel tutorials/Allvalidate
          $(ls tutorials/*/*/Allrun tutorials/*/*/Allclean)"
 failed=0
 check() {  # check <name> <command...>: the three spellings of help
