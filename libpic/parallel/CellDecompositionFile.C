@@ -3,6 +3,7 @@
 #include "core/error.H"
 #include "dictionary/Dictionary.H"
 
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 
@@ -16,10 +17,13 @@ void writeCellDecomposition(const std::string& path, const CellDecomposition& d)
        << "numberOfSubdomains " << d.subdomains << ";\nnCells " << d.owner.size() << ";\nowner\n(";
     for (std::size_t c = 0; c < d.owner.size(); ++c) os << (c % 32 == 0 ? "\n" : " ") << d.owner[c];
     os << "\n);\n";
-    std::ofstream out(path);
+    // Written apart and renamed: a run stopped while writing leaves the old owners whole.
+    const std::string tmp = path + ".tmp";
+    std::ofstream out(tmp);
     out << os.str();
     out.close();
-    if (!out) throw RunError("cannot write the cell decomposition to " + path);
+    if (!out || std::rename(tmp.c_str(), path.c_str()) != 0)
+        throw RunError("cannot write the cell decomposition to " + path);
 }
 
 CellDecomposition readCellDecomposition(const std::string& path, int nCells)

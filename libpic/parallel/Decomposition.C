@@ -88,6 +88,11 @@ DecompositionSettings readDecomposeParDict(const Dictionary& dict, int dimension
     s.subdomains = dict.getChecked<int>("numberOfSubdomains", [](int n) { return n >= 1; }, "numberOfSubdomains >= 1");
     const std::string method = dict.getWord("method", {"simple", "hierarchical", "scotch"});
     s.byParticles = dict.getWordOrDefault("weights", {"particles", "cells"}, "particles") == "particles";
+    if (dict.found("redecomposeInterval"))
+        s.redecomposeInterval = dict.getChecked<long>("redecomposeInterval", [](long n) { return n >= 0; },
+                                                      "redecomposeInterval >= 0 (steps; 0: never)");
+    if (dict.found("maxImbalance"))
+        s.maxImbalance = dict.getChecked<double>("maxImbalance", [](double r) { return r > 1; }, "maxImbalance > 1");
     if (method == "simple") {
         s.method = DecompositionSettings::Method::simple;
         s.n = readCounts(dict.subDict("simpleCoeffs"), dimension, s.subdomains);

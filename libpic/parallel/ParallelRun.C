@@ -1,17 +1,21 @@
 #include "parallel/ParallelRun.H"
 
 #include "core/error.H"
+#include "dictionary/Dictionary.H"
 #include "parallel/Decomposition.H"
 #include "parallel/ParticlePacking.H"
 
 #include <algorithm>
+#include <cstdio>
 
 namespace gpic {
 
 template <int D>
-ParallelRun<D>::ParallelRun(const Communicator& comm, const Grid<D>& grid, CellDecomposition decomposition, int reach)
-    : comm_(comm), decomposition_(std::move(decomposition)),
-      shared_(grid, decomposition_.owner, comm.rank(), reach)
+ParallelRun<D>::ParallelRun(const Communicator& comm, const Grid<D>& grid, const std::string& caseDir, int reach)
+    : comm_(comm), file_(caseDir + "/constant/cellDecomposition"),
+      settings_(readDecomposeParDict(Dictionary::readFile(caseDir + "/system/decomposeParDict", "system/decomposeParDict"), D)),
+      decomposition_(readCellDecomposition(file_, grid.nCells())), reach_(reach),
+      shared_(std::make_unique<SharedNodes<D>>(grid, decomposition_.owner, comm.rank(), reach))
 {
     if (decomposition_.subdomains != comm.size())
         throw InputError("constant/cellDecomposition", 0,
@@ -29,8 +33,8 @@ template <class T> double* values(std::vector<T>& field) { return reinterpret_ca
 
 template <int D> void ParallelRun<D>::complete(Grid<D>& grid, double* field, int components) const
 {
-    shared_.complete(field, components, comm_, [&grid](int n) { return grid.isActive(n); });
-    nodalBytes_ += static_cast<double>(shared_.sharedCount() * components * sizeof(double));
+    shared_->complete(field, components, comm_, [&grid](int n) { return grid.isActive(n); });
+    nodalBytes_ += static_cast<double>(shared_->sharedCount() * components * sizeof(double));
     ++exchanges_;
 }
 
@@ -51,11 +55,20 @@ template <int D> void ParallelRun<D>::completeForces(Grid<D>& grid) const
     complete(grid, values(grid.fExt), D);
 }
 
-template <int D> bool ParallelRun<D>::migrate(MpmSolver<D>& solver)
+template <int D> std::vector<int> ParallelRun<D>::allPeers() const
+{
+    std::vector<int> peers;
+    for (int r = 0; r < comm_.size(); ++r)
+        if (r != comm_.rank()) peers.push_back(r);
+    return peers;
+}
+
+template <int D> void ParallelRun<D>::place(MpmSolver<D>& solver) { handOver(solver, allPeers()); }
+
+template <int D> void ParallelRun<D>::handOver(MpmSolver<D>& solver, const std::vector<int>& peers)
 {
     const Grid<D>& grid = solver.grid();
     const Particles<D>& p = solver.particles();
-    const auto& peers = shared_.peers();
     std::vector<std::vector<std::size_t>> leaving(peers.size());
     std::vector<std::size_t> staying;
     staying.reserve(p.size());
@@ -65,7 +78,6 @@ template <int D> bool ParallelRun<D>::migrate(MpmSolver<D>& solver)
             staying.push_back(q);
             continue;
         }
-        // A particle moves less than a cell in a step (the Courant limit): into a neighbour's cells.
         const auto k = std::lower_bound(peers.begin(), peers.end(), owner) - peers.begin();
         if (k == static_cast<long>(peers.size()) || peers[static_cast<std::size_t>(k)] != owner)
             throw RunError("particle " + std::to_string(p.id[q]) + " moved into the cells of rank " +
@@ -79,14 +91,51 @@ template <int D> bool ParallelRun<D>::migrate(MpmSolver<D>& solver)
         sent_ += static_cast<long>(leaving[k].size());
     }
     const auto arrived = comm_.exchange(peers, send);
+    // A package of no particles is its header alone.
+    const std::size_t header = packParticles(p, {}).size();
     if (staying.size() == p.size() &&
-        std::all_of(arrived.begin(), arrived.end(), [](const std::vector<char>& b) { return b.size() <= 16; }))
-        return false;  // nothing left or came: the particles stay as they are, in their order
+        std::all_of(arrived.begin(), arrived.end(), [header](const std::vector<char>& b) { return b.size() == header; }))
+        return;  // nothing left or came: the particles stay as they are, in their order
     Particles<D> next = p;
     next.reorder(staying);
     for (const auto& bytes : arrived) received_ += static_cast<long>(unpackParticles(bytes, next));
     solver.replaceParticles(std::move(next));
-    return true;
+}
+
+template <int D> std::string ParallelRun<D>::rebalance(MpmSolver<D>& solver, long step)
+{
+    if (settings_.redecomposeInterval <= 0 || step % settings_.redecomposeInterval != 0) return "";
+    const int ranks = comm_.size();
+    const auto imbalance = [&](std::size_t here) {
+        std::vector<double> count(static_cast<std::size_t>(ranks), 0.0);
+        count[static_cast<std::size_t>(comm_.rank())] = static_cast<double>(here);
+        comm_.sumInRankOrder(count);
+        double total = 0, largest = 0;
+        for (double c : count) total += c, largest = std::max(largest, c);
+        return total > 0 ? largest * ranks / total : 1.0;
+    };
+    const double before = imbalance(solver.particles().size());
+    if (!(before > settings_.maxImbalance)) return "";
+    // The particles per cell over every rank, then the same decomposition on each.
+    const Grid<D>& grid = solver.grid();
+    std::vector<double> perCell(static_cast<std::size_t>(grid.nCells()), 0.0);
+    for (const auto& x : solver.particles().x) perCell[static_cast<std::size_t>(cellNumber(grid, grid.cellOf(x)))] += 1;
+    comm_.sumInRankOrder(perCell);
+    const std::vector<int> counts(perCell.begin(), perCell.end());
+    std::vector<int> owner = decomposeCells(grid, counts, settings_);
+    if (owner == decomposition_.owner) return "";  // the cell layers allow no better split
+    decomposition_.owner = std::move(owner);
+    writeCellDecomposition(file_, decomposition_);
+    shared_ = std::make_unique<SharedNodes<D>>(grid, decomposition_.owner, comm_.rank(), reach_);
+    const long sentBefore = sent_;
+    place(solver);
+    std::vector<double> moved{static_cast<double>(sent_ - sentBefore)};
+    comm_.sumInRankOrder(moved);
+    const double after = imbalance(solver.particles().size());
+    char line[200];
+    std::snprintf(line, sizeof line, "decomposed again at step %ld: largest subdomain over the mean %.3f -> %.3f, %.0f particles moved",
+                  step, before, after, moved[0]);
+    return line;
 }
 
 template class ParallelRun<2>;

@@ -11,7 +11,6 @@
 #include "io/ParticlesVtk.H"
 #include "io/PvdCollection.H"
 #include "io/TimeDirectories.H"
-#include "parallel/CellDecompositionFile.H"
 #include "run/WriteBudget.H"
 
 #include <algorithm>
@@ -106,8 +105,8 @@ void Simulation<D>::setUpParallel()
     int perAxis = 1;
     while (std::pow(perAxis + 1, D) <= solver_.nodesPerParticle() + 0.5) ++perAxis;
     const Grid<D>& grid = solver_.grid();
-    const std::string file = (fs::path(options_.caseDir) / "constant" / "cellDecomposition").string();
-    parallel_ = std::make_unique<ParallelRun<D>>(comm, grid, readCellDecomposition(file, grid.nCells()), (perAxis - 1) / 2);
+    parallel_ = std::make_unique<ParallelRun<D>>(comm, grid, options_.caseDir, (perAxis - 1) / 2);
+    parallel_->place(solver_);  // a start written before the last re-decomposition
     solver_.setNodalSums(parallel_.get());
     guard_->sumOverRanks([&comm](std::vector<double>& v) { comm.sumInRankOrder(v); });
     log() << "Parallel run: rank " << comm.rank() << " of " << comm.size() << ", " << solver_.particles().size()
@@ -364,7 +363,11 @@ void Simulation<D>::takeStep()
         if (case_->sortInterval > 0 && step_ % case_->sortInterval == 0) solver_.sortParticles();
         case_->scheme->advance(solver_, deltaT_);
         solver_.endStep(deltaT_);
-        if (parallel_) parallel_->migrate(solver_);  // the guard's account is over every rank
+        if (parallel_) {  // the guard's account is over every rank: moves carry no energy
+            parallel_->migrate(solver_);
+            const std::string rebalanced = parallel_->rebalance(solver_, step_ + 1);
+            if (!rebalanced.empty()) log() << "Parallel run: " << rebalanced << "\n";
+        }
     } catch (const RunError& e) {
         // The particle to blame, where the guard finds one in what the solver left.
         stop(guard_->diagnose(time_, step_ + 1, deltaT_),

@@ -80,6 +80,18 @@ compare $work/column 2 0.05 0.1
 prepare geotechnics/cylinderCollapse $work/cylinder 0.06 0.03 scotch 4
 compare $work/cylinder 4 0.03 0.06
 
+# Decomposed again as the column spreads (every 100 steps where the larger subdomain holds
+# more than 1.05 times the mean): the subdomains' particle counts closer, the results still
+# the serial run's.
+prepare geotechnics/columnCollapse $work/spread 0.2 0.1 hierarchical 2 \
+    "hierarchicalCoeffs { n (2 1); } redecomposeInterval 100; maxImbalance 1.05;"
+compare $work/spread 2 0.1 0.2
+grep -q "decomposed again at step .*particles moved" $work/spread/log.parallel ||
+    fail "the column was not decomposed again: $(grep 'Parallel run' $work/spread/log.parallel)"
+grep "decomposed again" $work/spread/log.parallel
+cmp -s $work/spread/processor0/constant/cellDecomposition $work/spread/processor1/constant/cellDecomposition ||
+    fail "the ranks wrote different decompositions"
+
 # Refused: a decomposition for another rank count; what a parallel run does not do yet.
 c=$work/cylinder
 out=$(cd $c && mpi 2 picSolver -parallel 2>&1) && fail "4 subdomains run on 2 ranks"
