@@ -42,7 +42,7 @@ void SingleField<D>::particlesToGrid(EngineView<D>& e, double t)
         }
     });
     grid.collectActive();
-    if (e.nodalSums) e.nodalSums->completeMassAndMomentum(grid);  // a parallel run: the other ranks' parts
+    if (e.rankSums) e.rankSums->completeMassAndMomentum(grid);  // a parallel run: the other ranks' parts
     grid.velocitiesFromMomenta();
     if (driven_) driven_->constrain(grid, e.rigid, t);
     e.sides.constrain(grid.velocity);
@@ -91,7 +91,7 @@ void SingleField<D>::remapVelocity(EngineView<D>& e, double tNew, double dt)
             momentum[n] += (Nw[k0 + a] * m) * (affine ? e.carriedVelocity(q, n, xp) : vp);
         }
     });
-    if (e.nodalSums) e.nodalSums->completeMomentum(grid);
+    if (e.rankSums) e.rankSums->completeMomentum(grid);
     grid.velocitiesFromMomenta();
     if (driven_) driven_->constrain(grid, e.rigid, tNew);
     e.sides.constrain(grid.velocity);

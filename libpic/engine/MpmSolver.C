@@ -115,7 +115,7 @@ EngineView<D> MpmSolver<D>::view()
 {
     return EngineView<D>{grid_,    particles_, weights_, strips_,       sides_,      rigid_,          *coupling_,
                       *transfer_, gravity_,  time_,    damping_,      minNodalMass_, massScale_, affineCentres(),
-                      timers_,    nodalSums_};
+                      timers_,    rankSums_};
 }
 
 template <int D>
@@ -386,7 +386,7 @@ template <int D>
 void MpmSolver<D>::updateGrid(double dt)
 {
     deltaT_ = dt;
-    if (nodalSums_) nodalSums_->completeForces(grid_);  // a parallel run: the other ranks' parts
+    if (rankSums_) rankSums_->completeForces(grid_);  // a parallel run: the other ranks' parts
     reach(StepPoint::beforeGridUpdate, dt);
     EngineView<D> engine = view();
     coupling_->updateGrid(engine, time_ + dt, dt);

@@ -27,6 +27,18 @@ void BodyMotion<D>::write(const MpmSolver<D>& solver, double time)
         kinetic[b] += p.kineticEnergy(q);  // APIC: with the part C_p carries
         strain[b] += p.work[q];
     }
+    // A parallel run: every rank's particles, rank 0 writes.
+    std::vector<double> sums;
+    for (std::size_t b = 0; b < nBodies; ++b) {
+        sums.insert(sums.end(), {mass[b], kinetic[b], strain[b]});
+        for (int a = 0; a < D; ++a) sums.insert(sums.end(), {moment[b][a], momentum[b][a]});
+    }
+    solver.sumOverRanks(sums);
+    for (std::size_t b = 0, k = 0; b < nBodies; ++b) {
+        mass[b] = sums[k++], kinetic[b] = sums[k++], strain[b] = sums[k++];
+        for (int a = 0; a < D; ++a) moment[b][a] = sums[k++], momentum[b][a] = sums[k++];
+    }
+    if (!solver.writesFiles()) return;
     std::ofstream& os = file("bodyMotion.dat");
     if (os.tellp() == 0) {
         if constexpr (D == 2)

@@ -45,13 +45,26 @@ double MassFlow<D>::massInRegion(const MpmSolver<D>& solver) const
         if ((region_ || shape_) && !insideRegion(p.x[q])) continue;
         mass += p.m[q];
     }
-    return factor_ * mass;
+    return mass;
+}
+
+template <int D> std::pair<double, double> MassFlow<D>::totals(const MpmSolver<D>& solver) const
+{
+    // A parallel run: every rank's particles and outflow (MpmSolver::sumOverRanks).
+    std::vector<double> sums{massInRegion(solver), solver.removedMass()};
+    solver.sumOverRanks(sums);
+    return {factor_ * sums[0], factor_ * sums[1]};
 }
 
 template <int D>
 void MassFlow<D>::start(const MpmSolver<D>& solver, double time)
 {
     factor_ = rowFactor(givenFactor_, solver.grid());
+    const auto [mass, removed] = totals(solver);
+    if (!solver.writesFiles()) {
+        if (!restarted()) lastTime_ = time, lastRemoved_ = removed, lastMass_ = mass;
+        return;
+    }
     std::ofstream& os = file("massFlow.dat");
     os << "# mass in the region [kg], mass gone through the outlets [kg], outflow rate [kg/s], "
           "drain rate of the region [kg/s]; masses per "
@@ -59,8 +72,8 @@ void MassFlow<D>::start(const MpmSolver<D>& solver, double time)
        << "\n# time mass out outflowRate drainRate\n";
     if (restarted()) return;  // the rates go on from the restored last row
     lastTime_ = time;
-    lastRemoved_ = factor_ * solver.removedMass();
-    lastMass_ = massInRegion(solver);
+    lastRemoved_ = removed;
+    lastMass_ = mass;
     os << time << ' ' << lastMass_ << ' ' << lastRemoved_ << " 0 0" << std::endl;  // readable while the run goes on
 }
 
@@ -82,11 +95,11 @@ void MassFlow<D>::readState(const Dictionary& state)
 template <int D>
 void MassFlow<D>::write(const MpmSolver<D>& solver, double time)
 {
-    const double mass = massInRegion(solver), removed = factor_ * solver.removedMass();
+    const auto [mass, removed] = totals(solver);
     const double dt = time - lastTime_;
     const double outflow = dt > 0 ? (removed - lastRemoved_) / dt : 0.0;
     const double drain = dt > 0 ? (lastMass_ - mass) / dt : 0.0;
-    file("massFlow.dat") << time << ' ' << mass << ' ' << removed << ' ' << outflow << ' ' << drain << '\n';
+    if (solver.writesFiles()) file("massFlow.dat") << time << ' ' << mass << ' ' << removed << ' ' << outflow << ' ' << drain << '\n';
     lastTime_ = time;
     lastRemoved_ = removed;
     lastMass_ = mass;

@@ -91,7 +91,8 @@ void Simulation<D>::setUpParallel()
         throw InputError(file, 0, what + ": not yet in a parallel run (doc/parallel.md); run it without -parallel");
     };
     if (case_->stages) refuse("system/controlDict", "stages");
-    if (!case_->functions.empty()) refuse("system/controlDict", "function objects (functions)");
+    for (const auto& f : case_->functions)
+        if (!f->servesParallelRuns()) refuse("system/controlDict", "function object " + f->name() + " (bodyMotion and massFlow serve parallel runs so far)");
     for (std::size_t b = 0; b < case_->context.bodyNames.size(); ++b)
         if (solver_.rigidBody(static_cast<int>(b))) refuse("constant/rigidBodies", "rigid bodies");
     if (solver_.contact()) refuse("constant/contactProperties", "contact between bodies");
@@ -107,7 +108,7 @@ void Simulation<D>::setUpParallel()
     const Grid<D>& grid = solver_.grid();
     parallel_ = std::make_unique<ParallelRun<D>>(comm, grid, options_.caseDir, (perAxis - 1) / 2);
     parallel_->place(solver_);  // a start written before the last re-decomposition
-    solver_.setNodalSums(parallel_.get());
+    solver_.setRankSums(parallel_.get());
     guard_->sumOverRanks([&comm](std::vector<double>& v) { comm.sumInRankOrder(v); });
     log() << "Parallel run: rank " << comm.rank() << " of " << comm.size() << ", " << solver_.particles().size()
           << " particles here, " << parallel_->sharedValues() << " node values shared with the neighbours per exchange\n";

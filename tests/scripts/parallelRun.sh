@@ -24,7 +24,6 @@ prepare()  # tutorial case endTime writeInterval method ranks [coefficients]
 import re, sys
 path, end, interval = sys.argv[1:]
 s = open(path).read()
-s = re.sub(r'functions\s*\{[^{}]*(\{[^{}]*\}[^{}]*)*\}', '', s)   # function objects: not yet in parallel
 s = re.sub(r'\nendTime\s+[^;]+;', '\nendTime ' + end + ';', s)
 s = re.sub(r'\nwriteInterval\s+[^;]+;', '\nwriteInterval ' + interval + ';', s)
 open(path, 'w').write(s)
@@ -69,6 +68,23 @@ print('%s: %d particles, largest difference %.2e of the array\'s largest value' 
 sys.exit(0 if worst <= 1e-12 else 1)
 END
     done
+    # The function objects' rows (bodyMotion: sums over every rank's particles, rank 0 writes).
+    for f in $(cd $c && find postProcessing -name '*.dat' 2> /dev/null); do
+        python3 - $c/$f $c/rec/$f <<'END' || fail "$c: $f"
+import sys
+rows = [[[float(v) for v in line.split()] for line in open(p) if not line.startswith('#')] for p in sys.argv[1:]]
+if len(rows[0]) != len(rows[1]) or not rows[0]:
+    sys.exit('%d rows against %d' % (len(rows[0]), len(rows[1])))
+# The rows are printed to 6 digits: alike where they differ by at most the last digit's
+# rounding (1e-5 of the value), or by 1e-12 of the column's largest value.
+bad = []
+for k in range(len(rows[0][0])):
+    scale = max(abs(r[k]) for r in rows[0]) or 1.0
+    bad += [(a[k], b[k]) for a, b in zip(*rows) if abs(a[k] - b[k]) > max(1e-5 * abs(a[k]), 1e-12 * scale)]
+print('%s: %d rows, %d values apart beyond their printed digits %s' % (sys.argv[2], len(rows[0]), len(bad), bad[:3]))
+sys.exit(0 if not bad else 1)
+END
+    done
     # The ranks' particles changed hands: rank 0 ends with another count than it started with.
     start=$(grep -o 'rank 0 of [0-9]*, [0-9]* particles' $c/log.parallel | grep -o '[0-9]* particles')
     end=$(grep -o '^End: .* steps, [0-9]* particles' $c/log.parallel | grep -o '[0-9]* particles$')
@@ -96,9 +112,9 @@ cmp -s $work/spread/processor0/constant/cellDecomposition $work/spread/processor
 c=$work/cylinder
 out=$(cd $c && mpi 2 picSolver -parallel 2>&1) && fail "4 subdomains run on 2 ranks"
 grep -q "decomposed into 4 subdomains, the run has 2 ranks" <<< "$out" || fail "message: $out"
-c=$work/motion
-cp -r "$source_dir/tutorials/geotechnics/columnCollapse" $c
+c=$work/stages
+cp -r "$source_dir/tutorials/stages/layeredFill" $c
 (cd $c && ./Allclean > /dev/null && cp $work/column/system/decomposeParDict system/ && picInit > /dev/null && picDecompose > /dev/null)
-out=$(cd $c && mpi 2 picSolver -parallel 2>&1) && fail "function objects accepted in a parallel run"
-grep -q "function objects (functions): not yet in a parallel run" <<< "$out" || fail "message: $out"
+out=$(cd $c && mpi 2 picSolver -parallel 2>&1) && fail "stages accepted in a parallel run"
+grep -q "stages: not yet in a parallel run" <<< "$out" || fail "message: $out"
 echo "parallelRun: ok"

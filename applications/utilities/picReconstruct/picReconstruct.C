@@ -1,8 +1,9 @@
 // picReconstruct: merges the time directories of a decomposed case back into the case, as
 // OpenFOAM's reconstructPar: the particles of every processor<N>/<time>/particles.vtp in one
 // <time>/particles.vtp, ordered by particle id, with the rest of processor0's time directory
-// (uniform/, the tools' surfaces), and the times added to <case>.pvd. A time the case holds
-// already is left as it is (said so). doc/parallel.md.
+// (uniform/, the tools' surfaces), and the times added to <case>.pvd; the function objects'
+// files, which rank 0 writes, into postProcessing/. A time or a file the case holds already is
+// left as it is (said so). doc/parallel.md.
 #include "applicationMain.H"
 #include "case/CaseFiles.H"
 #include "core/CaseLock.H"
@@ -69,6 +70,29 @@ void reconstruct(const std::string& caseDir, const std::vector<fs::path>& procs,
     std::cout << time << ": " << all.size() << " particles from " << procs.size() << " subdomains\n";
 }
 
+//- The function objects' files of a parallel run (rank 0 writes them, with every rank's
+//  sums) into the case's postProcessing/, where the case has no file of that name.
+void reconstructPostProcessing(const std::string& caseDir, const fs::path& processor0)
+{
+    const fs::path from = processor0 / "postProcessing";
+    if (!fs::is_directory(from)) return;
+    int copied = 0, kept = 0;
+    for (const auto& entry : fs::recursive_directory_iterator(from)) {
+        if (!entry.is_regular_file()) continue;
+        const fs::path to = fs::path(caseDir) / "postProcessing" / fs::relative(entry.path(), from);
+        if (fs::exists(to)) {
+            ++kept;
+            continue;
+        }
+        fs::create_directories(to.parent_path());
+        fs::copy_file(entry.path(), to);
+        ++copied;
+    }
+    std::cout << "postProcessing: " << copied << " files of the parallel run copied";
+    if (kept > 0) std::cout << ", " << kept << " the case holds already left as they are";
+    std::cout << '\n';
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -108,5 +132,6 @@ int main(int argc, char** argv)
                     reconstruct<2>(dir, procs, time);
                 }
             }
+            reconstructPostProcessing(dir, procs[0]);
         });
 }
