@@ -109,7 +109,7 @@ void Simulation<D>::setUpParallel()
         if (solver_.rigidBody(static_cast<int>(b))) refuse("constant/rigidBodies", "rigid bodies");
     if (solver_.contact()) refuse("constant/contactProperties", "contact between bodies");
     if (case_->hasLoads) refuse("constant/loads", "applied loads");
-    if (case_->volumetricStrainName == "cellMean") refuse("system/mpmSchemes", "volumetricStrain cellMean");
+    // volumetricStrain cellMean needs nothing more: a cell's particles are all its owner's.
     if (solver_.particles().carries(FieldGroup::affine) || case_->schemes.template getOrDefault<std::string>("transfer", "FLIP") == "XPIC")
         refuse("system/mpmSchemes", "transfer APIC and XPIC");
     if (solver_.particles().carries(FieldGroup::polar)) refuse("constant/materials", "polar (Cosserat) materials");

@@ -100,11 +100,16 @@ prepare geotechnics/cylinderCollapse/axisymmetric $work/axisymmetric 0.1 0.05 sc
 compare $work/axisymmetric 2 0.05 0.1
 
 # Decomposed again as the column spreads (every 100 steps where the larger subdomain holds
-# more than 1.05 times the mean): the subdomains' particle counts closer, the results still
-# the serial run's.
+# more than 1.05 times the mean), with volumetricStrain cellMean: the subdomains' particle
+# counts closer, the results still the serial run's.
 prepare geotechnics/columnCollapse $work/spread 0.2 0.1 hierarchical 2 \
     "hierarchicalCoeffs { n (2 1); } redecomposeInterval 100; maxImbalance 1.05;"
+# ... with the cell-mean dilatation, whose cells are each one rank's
+for f in $work/spread/system/mpmSchemes $work/spread/processor*/system/mpmSchemes; do
+    echo "volumetricStrain cellMean;" >> $f
+done
 compare $work/spread 2 0.1 0.2
+grep -q "volumetric strain cellMean" $work/spread/log.parallel || fail "the spreading column ran without cellMean"
 grep -q "decomposed again at step .*particles moved" $work/spread/log.parallel ||
     fail "the column was not decomposed again: $(grep 'Parallel run' $work/spread/log.parallel)"
 grep "decomposed again" $work/spread/log.parallel
