@@ -57,11 +57,11 @@ public:
         }
     }
 
-    double min(double value) const override
+    void min(std::vector<double>& values) const override
     {
-        double result = value;
-        check(MPI_Allreduce(&value, &result, 1, MPI_DOUBLE, MPI_MIN, MPI_COMM_WORLD), "MPI_Allreduce");
-        return result;
+        check(MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_DOUBLE, MPI_MIN,
+                            MPI_COMM_WORLD),
+              "MPI_Allreduce");
     }
 
     std::vector<std::vector<char>> exchange(const std::vector<int>& peers,

@@ -89,10 +89,11 @@ double Simulation<D>::parallelCriticalTimeStep() const
     // MpmSolver::criticalTimeStep's terms over every rank: the shortest step length over the
     // fastest wave and particle, the passes' smallest step. Minima and maxima are exact, so
     // the step is the serial run's to the bit.
-    const ParallelRun<D>& par = *parallel_;
-    const double length = par.min(solver_.stepLength());
-    const double wave = -par.min(-solver_.maxWaveSpeed()), speed = -par.min(-solver_.maxParticleSpeed());
-    return std::min(length / (wave + speed), par.min(solver_.passTimeStep()));
+    // One exchange a step: the maxima as minima of the negated values.
+    std::vector<double> terms{solver_.stepLength(), -solver_.maxWaveSpeed(), -solver_.maxParticleSpeed(),
+                              solver_.passTimeStep()};
+    parallel_->min(terms);
+    return std::min(terms[0] / (-terms[1] - terms[2]), terms[3]);
 }
 
 template <int D>

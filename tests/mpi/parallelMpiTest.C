@@ -35,7 +35,9 @@ TEST(ParallelMpi, sumsAreAddedInRankOrderOnEveryRank)
         for (int r = 1; r < world->size(); ++r) expected += valueOf(r, i + 1);
         EXPECT_EQ(v[i], expected);
     }
-    EXPECT_EQ(world->min(1.0 + world->rank()), 1.0);
+    std::vector<double> smallest{1.0 + world->rank(), -1.0 - world->rank()};
+    world->min(smallest);
+    EXPECT_EQ(smallest, (std::vector<double>{1.0, -static_cast<double>(world->size())}));
 }
 
 TEST(ParallelMpi, sharedNodesHoldTheRankOrderedSum)
