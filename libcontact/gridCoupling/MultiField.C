@@ -48,6 +48,16 @@ template <int D> void MultiField<D>::particlesToGrid(EngineView<D>& e, double t)
         }
     });
     grid.collectActive();
+    bodies.setRankSums(e.rankSums);
+    if (e.rankSums) {  // a parallel run: the other ranks' parts, on every node the owner sums over
+        e.rankSums->shareActiveNodes(grid);
+        for (int b = 0; b < bodies.nBodies(); ++b) {
+            BodyField<D>& f = bodies.field(b);
+            e.rankSums->complete(grid, f.mass);
+            e.rankSums->complete(grid, f.momentum);
+            if (positions) e.rankSums->complete(grid, f.position);
+        }
+    }
     // The system (centre-of-mass) field is the sum of the bodies' (F.8.6).
     grid.forEachActiveNode([&](int n) {
         for (int b = 0; b < bodies.nBodies(); ++b) {
@@ -135,6 +145,8 @@ template <int D> void MultiField<D>::updateGrid(EngineView<D>& e, double tNew, d
     Grid<D>& grid = e.grid;
     ContactPass<D>& bodies = *this->contact_;
     const int nBodies = bodies.nBodies();
+    if (e.rankSums)
+        for (int b = 0; b < nBodies; ++b) e.rankSums->complete(grid, bodies.field(b).force);
     {
         auto timer = e.timers.time("gridUpdate");
         for (int b = 0; b < nBodies; ++b) {
@@ -210,6 +222,10 @@ template <int D> void MultiField<D>::remapVelocity(EngineView<D>& e, double tNew
             bodyMomentum[n] += momentum;
         }
     });
+    if (e.rankSums) {
+        e.rankSums->completeMomentum(grid);
+        for (int b = 0; b < bodies.nBodies(); ++b) e.rankSums->complete(grid, bodies.field(b).momentum);
+    }
     grid.velocitiesFromMomenta();
     e.sides.constrain(grid.velocity);
     bodyVelocities(e, tNew);

@@ -20,7 +20,8 @@ template <int D>
 MultiFieldContact<D>::MultiFieldContact(const Dictionary& dict, ContactParts<D>& parts)
     : ContactPass<D>(parts.nBodies, *parts.grid), law_(std::move(parts.law)), normals_(std::move(parts.normals)),
       normalsName_(parts.normalsName), correctRemapped_(dict.getOrDefault<bool>("correctRemapped", false)),
-      remappedChoiceMade_(dict.found("correctRemapped")), fileName_(dict.fileName()), cellSize_(parts.grid->cellSize())
+      remappedChoiceMade_(dict.found("correctRemapped")), fileName_(dict.fileName()), cellSize_(parts.grid->cellSize()),
+      ranks_(parts.ranks)
 {
     present_.reserve(static_cast<std::size_t>(this->nBodies()));
     if (dict.found("separationCutoff")) {
@@ -62,10 +63,14 @@ int MultiFieldContact<D>::correct(Grid<D>& grid, const Particles<D>& p, const Dr
     contactNodes_.clear();
     for (int n : grid.active)
         if (this->shared(n)) contactNodes_.push_back(n);
-    if (contactNodes_.empty()) return 0;
-    // Only on steps with contact: the normals where the bodies are now.
+    // Only on steps with contact: the normals where the bodies are now. A parallel run
+    // places them on every rank when any has contact (the normals sum over the ranks).
+    std::vector<double> none{contactNodes_.empty() ? 1.0 : 0.0};
+    ranks_.minOver(none);
+    if (none[0] > 0.0) return 0;
     normals_->place(grid, p, contactNodes_);
     correctNodes(grid, rigid, tNew, dt, &loads);
+    if (this->rankSums_) this->rankSums_->sumLoads(loads);
     return static_cast<int>(contactNodes_.size());
 }
 
@@ -99,6 +104,8 @@ void MultiFieldContact<D>::correctNodes(Grid<D>& grid, const Drivers& rigid, dou
     };
 
     for (int n : contactNodes_) {
+        // A parallel run: the loads from the nodes this rank owns (each node counted once).
+        const bool counted = !this->rankSums_ || this->rankSums_->owns(n);
         present_.clear();
         int r = -1;  // the heaviest rigid body at the node
         for (int b = 0; b < nb; ++b) {
@@ -117,11 +124,12 @@ void MultiFieldContact<D>::correctNodes(Grid<D>& grid, const Drivers& rigid, dou
                 if (normal.isZero() || !touching(b, r, n, normal)) continue;
                 const Vector f = apply(b, r, n, vRef, normal);
                 if (!loads) continue;
+                grid.fContact[n] -= f;
+                if (!counted) continue;
                 (*loads)[b].force += f;
                 (*loads)[b].moment += momentOf(x, f);
                 (*loads)[r].force -= f;
                 (*loads)[r].moment -= momentOf(x, f);
-                grid.fContact[n] -= f;
             }
             continue;
         }
@@ -148,9 +156,10 @@ void MultiFieldContact<D>::correctNodes(Grid<D>& grid, const Drivers& rigid, dou
                 if (o != b && (other < 0 || field(o).mass[n] > field(other).mass[n])) other = o;
             const Vector f = apply(b, other, n, vCm, normal);
             if (!loads) continue;
+            if (k == 0) grid.fContact[n] += f;
+            if (!counted) continue;
             (*loads)[b].force += f;
             (*loads)[b].moment += momentOf(x, f);
-            if (k == 0) grid.fContact[n] += f;
         }
     }
 }

@@ -6,7 +6,8 @@
 namespace gpic {
 
 template <int D>
-MassGradientNormals<D>::MassGradientNormals(const Dictionary&, const ContactScene& scene) : nBodies_(scene.nBodies())
+MassGradientNormals<D>::MassGradientNormals(const Dictionary&, const ContactScene& scene)
+    : nBodies_(scene.nBodies()), ranks_(scene.ranks)
 {
     if constexpr (D == 3)
         for (std::size_t s = 0; s < mirror_.size() && s < scene.mirror.size(); ++s) mirror_[s] = scene.mirror[s];
@@ -44,6 +45,12 @@ void MassGradientNormals<D>::place(const Grid<D>& grid, const Particles<D>& p, c
             lowCell[a] = std::min(lowCell[a], std::max(i[a] - 1, 0));
             highCell[a] = std::max(highCell[a], std::min(i[a], n_[a] - 1));
         }
+    }
+    if (ranks_.parallel()) {  // the box around every rank's contact nodes
+        std::vector<double> bounds;
+        for (int a = 0; a < D; ++a) bounds.insert(bounds.end(), {double(lowCell[a]), -double(highCell[a])});
+        ranks_.minOver(bounds);
+        for (int a = 0; a < D; ++a) lowCell[a] = int(bounds[2 * a]), highCell[a] = -int(bounds[2 * a + 1]);
     }
     const Vector origin = grid.origin(), h = h_;
     // A particle reaches the centres of the cells within half a cell of its own: one beyond
@@ -90,6 +97,35 @@ void MassGradientNormals<D>::place(const Grid<D>& grid, const Particles<D>& p, c
                     }
         }
     }
+    if (ranks_.parallel()) sumBoxOverRanks(lowCell, highCell);
+}
+
+template <int D>
+void MassGradientNormals<D>::sumBoxOverRanks(const std::array<int, D>& lowCell, const std::array<int, D>& highCell)
+{
+    // The box's cells of every body, in one sum; the cells a mirror folds back into the box
+    // lie in it already (a fold maps onto the cells beside the side).
+    std::vector<std::size_t> cells;
+    std::array<int, D> c = lowCell;
+    for (int a = 0; a < D; ++a)
+        if (highCell[a] < lowCell[a]) return;  // no rank has contact
+    while (true) {
+        std::size_t index = 0, stride = 1;
+        for (int a = 0; a < D; ++a) index += stride * static_cast<std::size_t>(c[a]), stride *= static_cast<std::size_t>(n_[a]);
+        cells.push_back(index);
+        int a = 0;
+        while (a < D && ++c[a] > highCell[a]) c[a] = lowCell[a], ++a;
+        if (a == D) break;
+    }
+    const std::size_t all = cellCount();
+    std::vector<double> values;
+    values.reserve(cells.size() * static_cast<std::size_t>(nBodies_));
+    for (int b = 0; b < nBodies_; ++b)
+        for (std::size_t k : cells) values.push_back(density_[static_cast<std::size_t>(b) * all + k]);
+    ranks_.sumOver(values);
+    std::size_t v = 0;
+    for (int b = 0; b < nBodies_; ++b)
+        for (std::size_t k : cells) density_[static_cast<std::size_t>(b) * all + k] = values[v++];
 }
 
 template <int D> typename MassGradientNormals<D>::Vector MassGradientNormals<D>::outward(int body, int node) const

@@ -36,11 +36,11 @@ bool RigidSolidSurface::onGridSide(const Vector& foot, const Vector& normal) con
 }
 
 void RigidSolidSurface::place(const Particles<3>& p, int body, double reach, const Vector& gridLower,
-                              const Vector& gridUpper)
+                              const Vector& gridUpper, const RankReductions& ranks)
 {
     gridLower_ = gridLower;
     gridUpper_ = gridUpper;
-    const RigidPose pose = RigidPose::of(p, body);
+    const RigidPose pose = RigidPose::of(p, body, ranks);
     // Searches made where the body was stay true only where it still is, to the bit.
     steady_ = pose.R == pose_.R && pose.c0 == pose_.c0 && pose.c == pose_.c && reach == reach_;
     if (!steady_) searches_.clear();

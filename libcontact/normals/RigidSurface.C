@@ -29,7 +29,7 @@ RigidSurface::RigidSurface(const Dictionary& d)
     if (area2 < 0) std::reverse(points_.begin(), points_.end());  // counter-clockwise
 }
 
-void RigidSurface::place(const Particles<2>& p, int body)
+void RigidSurface::place(const Particles<2>& p, int body, const RankReductions& ranks)
 {
     double mass = 0;
     Vector2 c = Vector2::Zero(), c0 = Vector2::Zero();
@@ -44,6 +44,11 @@ void RigidSurface::place(const Particles<2>& p, int body)
             c += p.m[q] * p.x[q];
             c0 += p.m[q] * p.x0[q];
         }
+    if (ranks.parallel()) {  // every rank's particles of the body
+        std::vector<double> sums{mass, c.x(), c.y(), c0.x(), c0.y()};
+        ranks.sumOver(sums);
+        mass = sums[0], c = Vector2(sums[1], sums[2]), c0 = Vector2(sums[3], sums[4]);
+    }
     if (mass <= 0) return;
     c /= mass;
     c0 /= mass;
@@ -51,6 +56,11 @@ void RigidSurface::place(const Particles<2>& p, int body)
     Eigen::Matrix2d A = Eigen::Matrix2d::Zero();
     for (std::size_t q = first; q <= last; ++q)
         if (p.body[q] == body) A.noalias() += p.m[q] * (p.x[q] - c) * (p.x0[q] - c0).transpose();
+    if (ranks.parallel()) {
+        std::vector<double> sums(A.data(), A.data() + 4);
+        ranks.sumOver(sums);
+        A = Eigen::Map<const Eigen::Matrix2d>(sums.data());
+    }
     angle_ = std::atan2(A(1, 0) - A(0, 1), A(0, 0) + A(1, 1));
     cos_ = std::cos(angle_);
     sin_ = std::sin(angle_);

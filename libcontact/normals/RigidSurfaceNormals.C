@@ -6,7 +6,7 @@ namespace gpic {
 
 template <int D>
 RigidSurfaceNormals<D>::RigidSurfaceNormals(const Dictionary& dict, const ContactScene& scene)
-    : MassGradientNormals<D>(dict, scene), surfaces_(scene.bodyNames.size())
+    : MassGradientNormals<D>(dict, scene), surfaces_(scene.bodyNames.size()), ranks_(scene.ranks)
 {
     const Dictionary bodies = readCaseFile(scene.caseDir, "constant/bodies");
     for (std::size_t b = 0; b < scene.bodyNames.size(); ++b) {
@@ -24,8 +24,8 @@ void RigidSurfaceNormals<D>::place(const Grid<D>& grid, const Particles<D>& p, c
     MassGradientNormals<D>::place(grid, p, nodes);
     for (std::size_t b = 0; b < surfaces_.size(); ++b) {
         if (!surfaces_[b]) continue;
-        if constexpr (D == 2) surfaces_[b]->place(p, static_cast<int>(b));
-        else surfaces_[b]->place(p, static_cast<int>(b), grid.cellSize().maxCoeff(), grid.origin(), grid.upper());
+        if constexpr (D == 2) surfaces_[b]->place(p, static_cast<int>(b), ranks_);
+        else surfaces_[b]->place(p, static_cast<int>(b), grid.cellSize().maxCoeff(), grid.origin(), grid.upper(), ranks_);
     }
 }
 

@@ -7,6 +7,7 @@
 #include "dictionary/ExactNumber.H"
 #include "io/ParticlesVtk.H"
 #include "io/TimeDirectories.H"
+#include "parallel/Communicator.H"
 #include "planar/CosseratRotation.H"
 
 #include <cmath>
@@ -214,9 +215,14 @@ template <int D> std::unique_ptr<Case<D>> readCase(const RunOptions& options)
     if (c.hasLoads) in.loads = readLoads<D>(readCaseFile(dir, "constant/loads"));
     massScaling.refuseLoads(controlDict, c.hasLoads);
     in.bodyNames = bodyNames;
+    if (const Communicator* comm = options.communicator) {  // a parallel run: its sums over the ranks
+        in.ranks.sum = [comm](std::vector<double>& v) { comm->sumInRankOrder(v); };
+        in.ranks.min = [comm](std::vector<double>& v) { comm->min(v); };
+    }
     if (hasFile(dir, "constant/contactProperties")) {
         const Dictionary contactDict = readCaseFile(dir, "constant/contactProperties");
-        ContactScene scene{dir, bodyNames, {}};
+        ContactScene scene{dir, bodyNames, {}, {}, {}};
+        scene.ranks = in.ranks;
         for (int b = 0; b < scene.nBodies(); ++b)
             scene.rigid.push_back(static_cast<std::size_t>(b) < in.rigidBodies.size() && in.rigidBodies[b]);
         for (const auto& side : in.boundaries) scene.mirror.push_back(side->isMirror());

@@ -62,6 +62,7 @@ std::unique_ptr<ContactPass<D>> ContactPass<D>::New(const Dictionary& dict, cons
     parts.normals = ContactNormals<D>::New(dict, scene);
     parts.nBodies = scene.nBodies();
     parts.grid = &grid;
+    parts.ranks = scene.ranks;
     if (!parts.law->needsBodyFields() || parts.nBodies < 2) return nullptr;
     // One algorithm is built in; `algorithm` names another from a user's library.
     const std::string algorithm = dict.found("algorithm") ? dict.get<std::string>("algorithm") : "multiField";

@@ -20,6 +20,13 @@ void RigidNodeCoupling<D>::reset(const std::vector<int>& active)
     }
 }
 
+template <int D> void RigidNodeCoupling<D>::complete(const Grid<D>& grid, const RankSums<D>& sums)
+{
+    sums.complete(grid, mass_);
+    sums.complete(grid, momentum_);
+    sums.completeMax(grid, body_);
+}
+
 template <int D>
 void RigidNodeCoupling<D>::constrain(Grid<D>& grid, const Drivers& rigid, double t) const
 {
@@ -29,7 +36,7 @@ void RigidNodeCoupling<D>::constrain(Grid<D>& grid, const Drivers& rigid, double
 
 template <int D>
 void RigidNodeCoupling<D>::update(Grid<D>& grid, const Drivers& rigid, double tNew, double dt, const Vector& gravity,
-                               double minNodalMass, std::vector<RigidBodyLoad<D>>& loads) const
+                               double minNodalMass, std::vector<RigidBodyLoad<D>>& loads, const RankSums<D>* sums) const
 {
     for (auto& load : loads) load = RigidBodyLoad<D>{};
     for (int n : grid.active) {
@@ -45,8 +52,10 @@ void RigidNodeCoupling<D>::update(Grid<D>& grid, const Drivers& rigid, double tN
         const Vector materialForce = grid.fInt[n] + grid.fExt[n] - mass_[n] * gravity;
         const Vector f = materialForce - (materialMass * vNew - materialMomentum) / dt;
         grid.fContact[n] = f;
-        loads[b].force += f;
-        loads[b].moment += momentOf(x, f);
+        if (!sums || sums->owns(n)) {
+            loads[b].force += f;
+            loads[b].moment += momentOf(x, f);
+        }
         // The material's particles take the contact impulse (FLIP update): the acceleration
         // brings the material's own nodal velocity, not the body's, to the body's new one.
         const Vector vMaterial = materialMass > minNodalMass ? Vector(materialMomentum / materialMass)
@@ -54,6 +63,7 @@ void RigidNodeCoupling<D>::update(Grid<D>& grid, const Drivers& rigid, double tN
         grid.accel[n] = (vNew - vMaterial) / dt;
         grid.velocity[n] = vMaterial;
     }
+    if (sums) sums->sumLoads(loads);
 }
 
 template class RigidNodeCoupling<2>;

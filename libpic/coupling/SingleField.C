@@ -42,7 +42,13 @@ void SingleField<D>::particlesToGrid(EngineView<D>& e, double t)
         }
     });
     grid.collectActive();
-    if (e.rankSums) e.rankSums->completeMassAndMomentum(grid);  // a parallel run: the other ranks' parts
+    if (e.rankSums) {  // a parallel run: the other ranks' parts
+        if (driven_) {  // the loads on rigid bodies sum over the nodes each rank owns
+            e.rankSums->shareActiveNodes(grid);
+            driven_->complete(grid, *e.rankSums);
+        }
+        e.rankSums->completeMassAndMomentum(grid);
+    }
     grid.velocitiesFromMomenta();
     if (driven_) driven_->constrain(grid, e.rigid, t);
     e.sides.constrain(grid.velocity);
@@ -62,7 +68,7 @@ void SingleField<D>::updateGrid(EngineView<D>& e, double tNew, double dt)
         grid.accel[n] = grid.mass[n] > e.minNodalMass ? Vector(F / grid.mass[n]) : Vector::Zero();  // eq. 2.4.2
     });
     // Rigid nodes: the acceleration that brings them to the body's velocity.
-    if (driven_) driven_->update(grid, e.rigid, tNew, dt, e.gravity, e.minNodalMass, this->loads_);
+    if (driven_) driven_->update(grid, e.rigid, tNew, dt, e.gravity, e.minNodalMass, this->loads_, e.rankSums);
     grid.forEachActiveNode([&](int n) {
         grid.velocity[n] += dt * grid.accel[n];  // eq. 2.4.3
     });

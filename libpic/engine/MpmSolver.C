@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <sstream>
 
@@ -69,6 +70,7 @@ MpmSolver<D>::MpmSolver(SolverInputs<D> in)
       shape_(std::move(in.shape)), sides_(std::move(in.boundaries), grid_), strips_(grid_),
       transfer_(std::make_unique<FlipTransfer>(Dictionary::parse("transfer FLIP;", "the seed's FLIP")))
 {
+    ranks_ = in.ranks;
     setUpParticles();
     // The order matters: the rigid bodies' mass properties take gravity, the contact pass's
     // arrays the rigid bodies.
@@ -208,9 +210,16 @@ void MpmSolver<D>::setUpParticles()
             throw RunError("particle material id " + std::to_string(b.material) +
                            " has no material in constant/materials");
     markDeformingMaterials();
-    // The small-mass cut-off follows the lightest particle present.
+    // The small-mass cut-off follows the lightest particle present. A parallel run takes it
+    // over every rank once, at the start: particles handed between ranks leave it as it is.
+    if (ranks_.parallel() && minNodalMass_ > 0.0) return;
     double lightest = 0;
     for (double m : particles_.m) lightest = lightest == 0 ? m : std::min(lightest, m);
+    if (ranks_.parallel()) {  // every rank's lightest: the same cut-off as the serial run
+        std::vector<double> m{lightest > 0 ? lightest : std::numeric_limits<double>::max()};
+        ranks_.minOver(m);
+        lightest = m[0] < std::numeric_limits<double>::max() ? m[0] : 0.0;
+    }
     minNodalMass_ = 1e-9 * lightest;
 }
 
@@ -316,7 +325,7 @@ void MpmSolver<D>::attachRigidBodies(std::vector<std::unique_ptr<RigidBodyDriver
     const bool anyRigid = std::any_of(drivers.begin(), drivers.end(), [](const auto& d) { return d != nullptr; });
     rigid_ = anyRigid ? std::move(drivers) : std::vector<std::unique_ptr<RigidBodyDriver<D>>>{};
     if (anyRigid) {
-        const auto info = RigidBodyInfo<D>::ofBodies(particles_, rigid_.size(), gravity_);
+        const auto info = RigidBodyInfo<D>::ofBodies(particles_, rigid_.size(), gravity_, ranks_);
         for (std::size_t b = 0; b < rigid_.size(); ++b)
             if (rigid_[b]) rigid_[b]->attach(info[b]);
     }
@@ -335,8 +344,9 @@ void MpmSolver<D>::markDeformingMaterials()
             if (m >= 0 && m < static_cast<int>(materials_.size())) materialDeforms_[m] = any = true;
         }
     // No deformable particle yet (a fill whose layers all sleep): every material counts, so
-    // the time step stays finite and on the safe side.
-    if (!any) materialDeforms_.assign(materials_.size(), 1);
+    // the time step stays finite and on the safe side. Not on one rank of a parallel run, whose
+    // subdomain may hold a rigid body alone: the step's terms come from every rank's particles.
+    if (!any && !ranks_.parallel()) materialDeforms_.assign(materials_.size(), 1);
 }
 
 template <int D>

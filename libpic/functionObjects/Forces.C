@@ -75,6 +75,8 @@ void Forces<D>::start(const MpmSolver<D>& solver, double)
                                                "' is not a rigid body; valid choices: " + choiceList(rigid));
         face.body = static_cast<int>(std::find(all.begin(), all.end(), face.bodyName) - all.begin());
     }
+    axisymmetric_ = solver.grid().axisymmetric();
+    if (!solver.writesFiles()) return;  // a parallel run: rank 0 writes
     std::ofstream& os = file("forces.dat");
     if constexpr (D == 2) {
         os << "# force of the material on each body [N/m], its moment about CofR (" << CofR_.x() << ' '
@@ -95,7 +97,6 @@ void Forces<D>::start(const MpmSolver<D>& solver, double)
     for (const auto& part : parts_)
         for (const char* c : {"Fx", "Fy", "Fz"}) os << ' ' << part.name << ':' << c;
     for (int b : bodies_) os << ' ' << all[b] << ":W";
-    axisymmetric_ = solver.grid().axisymmetric();
     if (axisymmetric_)
         for (int b : bodies_) os << ' ' << all[b] << ":Faxial";
     os << std::endl;
@@ -114,6 +115,14 @@ void Forces<D>::write(const MpmSolver<D>& solver, double time)
         mass[b] += p.m[q];
         moved[b] += p.m[q] * (p.x[q] - p.x0[q]);
     }
+    // A parallel run: the sums over every rank's particles and over the nodes each owns, on
+    // every rank; rank 0 writes.
+    sumOverRanks(solver, moved, &mass);
+    std::vector<Vector> faceForces = faceSums(solver, mass, moved);
+    sumOverRanks(solver, faceForces);
+    std::vector<Vector> partForces = partSums(solver);
+    sumOverRanks(solver, partForces);
+    if (!solver.writesFiles()) return;
     const auto& loads = solver.rigidBodyLoads();
     std::ofstream& os = file("forces.dat");
     os << time;
@@ -130,20 +139,10 @@ void Forces<D>::write(const MpmSolver<D>& solver, double time)
                 for (int a = 0; a < D; ++a) os << ' ' << (*v)[a];
         }
     }
-    [[maybe_unused]] const Grid<D>& grid = solver.grid();
-    for (const auto& face : faces_) {
-        const auto k = static_cast<std::size_t>(face.body);
-        const Vector d = mass[k] > 0.0 ? Vector(moved[k] / mass[k]) : Vector::Zero();
-        if constexpr (D == 2) {
-            const FaceBand band(face.from + d, face.to + d, grid.cellSize().maxCoeff());
-            Vector F = Vector::Zero();
-            if (!grid.fContact.empty())
-                for (int n : grid.active)
-                    if (band.station(grid.nodePosition(n))) F += grid.fContact[static_cast<std::size_t>(n)];
-            os << ' ' << F.x() << ' ' << F.y();
-        }
-    }
-    if constexpr (D == 3) writeParts(solver, os);
+    for (const Vector& F : faceForces)
+        for (int a = 0; a < D; ++a) os << ' ' << F[a];
+    for (const Vector& F : partForces)
+        for (int a = 0; a < D; ++a) os << ' ' << F[a];
     for (double w : work_) os << ' ' << w;
     if (axisymmetric_)
         for (int b : bodies_) {
@@ -154,24 +153,56 @@ void Forces<D>::write(const MpmSolver<D>& solver, double time)
 }
 
 template <int D>
-void Forces<D>::writeParts(const MpmSolver<D>& solver, std::ostream& os) const
+void Forces<D>::sumOverRanks(const MpmSolver<D>& solver, std::vector<Vector>& vectors, std::vector<double>* scalars)
 {
+    std::vector<double> values = scalars ? *scalars : std::vector<double>{};
+    for (const Vector& v : vectors) values.insert(values.end(), v.data(), v.data() + D);
+    solver.sumOverRanks(values);
+    std::size_t k = 0;
+    if (scalars)
+        for (double& x : *scalars) x = values[k++];
+    for (Vector& v : vectors)
+        for (int a = 0; a < D; ++a) v[a] = values[k++];
+}
+
+template <int D>
+std::vector<typename Forces<D>::Vector> Forces<D>::faceSums(const MpmSolver<D>& solver, const std::vector<double>& mass,
+                                                           const std::vector<Vector>& moved) const
+{
+    std::vector<Vector> F(faces_.size(), Vector::Zero());
+    if constexpr (D == 2) {
+        const Grid<D>& grid = solver.grid();
+        for (std::size_t k = 0; k < faces_.size(); ++k) {
+            const Face& face = faces_[k];
+            const auto b = static_cast<std::size_t>(face.body);
+            const Vector d = mass[b] > 0.0 ? Vector(moved[b] / mass[b]) : Vector::Zero();
+            const FaceBand band(face.from + d, face.to + d, grid.cellSize().maxCoeff());
+            if (!grid.fContact.empty())
+                for (int n : grid.active)
+                    if (solver.countsNode(n) && band.station(grid.nodePosition(n))) F[k] += grid.fContact[static_cast<std::size_t>(n)];
+        }
+    }
+    return F;
+}
+
+template <int D>
+std::vector<typename Forces<D>::Vector> Forces<D>::partSums(const MpmSolver<D>& solver) const
+{
+    std::vector<Vector> F(parts_.size(), Vector::Zero());
     if constexpr (D == 3) {
-        if (parts_.empty()) return;
         const Grid<D>& grid = solver.grid();
         const double reach = 2.0 * grid.cellSize().maxCoeff();
-        std::vector<Vector> F(parts_.size(), Vector::Zero());
         // Part after part of one body are neighbours in parts_: one pose and one pass over
         // the nodes per body.
         for (std::size_t first = 0; first < parts_.size();) {
             const Part& tool = parts_[first];
             std::size_t last = first;
             while (last < parts_.size() && parts_[last].body == tool.body) ++last;
-            const RigidPose pose = RigidPose::of(solver.particles(), tool.body);
+            const RigidPose pose = RigidPose::of(solver.particles(), tool.body, solver.ranks());
             if (!grid.fContact.empty())
                 for (int n : grid.active) {
                     const Vector& f = grid.fContact[static_cast<std::size_t>(n)];
-                    if (f.isZero()) continue;
+                    if (f.isZero() || !solver.countsNode(n)) continue;
                     const int facet = tool.surface->facetPushedBy(pose.unplace(grid.nodePosition(n)), pose.unturn(f),
                                                                   0.5 * grid.cellSize().minCoeff(), reach);
                     if (facet < 0) continue;
@@ -179,8 +210,8 @@ void Forces<D>::writeParts(const MpmSolver<D>& solver, std::ostream& os) const
                 }
             first = last;
         }
-        for (const Vector& f : F) os << ' ' << f.x() << ' ' << f.y() << ' ' << f.z();
     }
+    return F;
 }
 
 template <int D>

@@ -31,10 +31,38 @@ template <class T> double* values(std::vector<T>& field) { return reinterpret_ca
 
 } // namespace
 
-template <int D> void ParallelRun<D>::complete(Grid<D>& grid, double* field, int components) const
+template <int D> void ParallelRun<D>::complete(const Grid<D>& grid, double* field, int components) const
 {
     shared_->complete(field, components, comm_, [&grid](int n) { return grid.isActive(n); });
     nodalBytes_ += static_cast<double>(shared_->sharedCount() * components * sizeof(double));
+    ++exchanges_;
+}
+
+template <int D> void ParallelRun<D>::shareActiveNodes(Grid<D>& grid) const
+{
+    bool added = false;
+    shared_->shareMarks([&grid](int n) { return grid.isActive(n); },
+                        [&grid, &added](int n) { grid.markActive(n), added = true; }, comm_);
+    nodalBytes_ += static_cast<double>(shared_->sharedCount());
+    ++exchanges_;
+    if (added) grid.collectActive();
+}
+
+template <int D> void ParallelRun<D>::complete(const Grid<D>& grid, std::vector<double>& field) const
+{
+    complete(grid, field.data(), 1);
+}
+
+template <int D>
+void ParallelRun<D>::complete(const Grid<D>& grid, std::vector<typename Space<D>::Vector>& field) const
+{
+    complete(grid, values(field), D);
+}
+
+template <int D> void ParallelRun<D>::completeMax(const Grid<D>& grid, std::vector<int>& field) const
+{
+    shared_->completeMax(field.data(), comm_, [&grid](int n) { return grid.isActive(n); });
+    nodalBytes_ += static_cast<double>(shared_->sharedCount() * sizeof(int));
     ++exchanges_;
 }
 

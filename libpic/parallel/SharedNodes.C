@@ -71,10 +71,11 @@ template <int D> std::size_t SharedNodes<D>::sharedCount() const
 }
 
 template <int D>
-void SharedNodes<D>::complete(double* field, int components, const Communicator& comm,
-                              const std::function<bool(int)>& written) const
+template <class T, class Add>
+void SharedNodes<D>::combine(T* field, int components, const Communicator& comm, const std::function<bool(int)>& written,
+                             Add add) const
 {
-    const std::size_t width = static_cast<std::size_t>(components) * sizeof(double);
+    const std::size_t width = static_cast<std::size_t>(components) * sizeof(T);
     std::vector<std::vector<char>> send(peers_.size());
     for (std::size_t k = 0; k < peers_.size(); ++k) {
         send[k].resize(shared_[k].size() * width);
@@ -82,21 +83,53 @@ void SharedNodes<D>::complete(double* field, int components, const Communicator&
             std::memcpy(send[k].data() + m * width, field + static_cast<std::size_t>(shared_[k][m]) * components, width);
     }
     const auto received = comm.exchange(peers_, send);
-    std::vector<double> own(static_cast<std::size_t>(components)), value(static_cast<std::size_t>(components));
+    std::vector<T> own(static_cast<std::size_t>(components)), value(static_cast<std::size_t>(components));
     for (std::size_t s = 0; s < sharedNodes_.size(); ++s) {
         if (written && !written(sharedNodes_[s])) continue;
-        double* node = field + static_cast<std::size_t>(sharedNodes_[s]) * components;
+        T* node = field + static_cast<std::size_t>(sharedNodes_[s]) * components;
         std::copy(node, node + components, own.begin());
         bool first = true;
         for (const Part& part : parts_[s]) {
-            const double* v = own.data();
+            const T* v = own.data();
             if (part.peer >= 0) {
                 std::memcpy(value.data(), received[part.peer].data() + part.position * width, width);
                 v = value.data();
             }
-            for (int c = 0; c < components; ++c) node[c] = first ? v[c] : node[c] + v[c];
+            for (int c = 0; c < components; ++c) node[c] = first ? v[c] : add(node[c], v[c]);
             first = false;
         }
+    }
+}
+
+template <int D>
+void SharedNodes<D>::complete(double* field, int components, const Communicator& comm,
+                              const std::function<bool(int)>& written) const
+{
+    combine(field, components, comm, written, [](double a, double b) { return a + b; });
+}
+
+template <int D>
+void SharedNodes<D>::completeMax(int* field, const Communicator& comm, const std::function<bool(int)>& written) const
+{
+    combine(field, 1, comm, written, [](int a, int b) { return std::max(a, b); });
+}
+
+template <int D>
+void SharedNodes<D>::shareMarks(const std::function<bool(int)>& marked, const std::function<void(int)>& mark,
+                                const Communicator& comm) const
+{
+    std::vector<std::vector<char>> send(peers_.size());
+    for (std::size_t k = 0; k < peers_.size(); ++k)
+        for (int n : shared_[k]) send[k].push_back(marked(n) ? 1 : 0);
+    const auto received = comm.exchange(peers_, send);
+    for (std::size_t s = 0; s < sharedNodes_.size(); ++s) {
+        const int n = sharedNodes_[s];
+        if (marked(n)) continue;
+        for (const Part& part : parts_[s])
+            if (part.peer >= 0 && received[part.peer][part.position] != 0) {
+                mark(n);
+                break;
+            }
     }
 }
 

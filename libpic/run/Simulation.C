@@ -105,10 +105,7 @@ void Simulation<D>::setUpParallel()
     };
     if (case_->stages) refuse("system/controlDict", "stages");
     for (const auto& f : case_->functions)
-        if (!f->servesParallelRuns()) refuse("system/controlDict", "function object " + f->name() + " (bodyMotion and massFlow serve parallel runs so far)");
-    for (std::size_t b = 0; b < case_->context.bodyNames.size(); ++b)
-        if (solver_.rigidBody(static_cast<int>(b))) refuse("constant/rigidBodies", "rigid bodies");
-    if (solver_.contact()) refuse("constant/contactProperties", "contact between bodies");
+        if (!f->servesParallelRuns()) refuse("system/controlDict", "function object " + f->name() + " (bodyMotion, forces and massFlow serve parallel runs so far)");
     if (case_->hasLoads) refuse("constant/loads", "applied loads");
     // volumetricStrain cellMean needs nothing more: a cell's particles are all its owner's.
     if (solver_.particles().carries(FieldGroup::affine) || case_->schemes.template getOrDefault<std::string>("transfer", "FLIP") == "XPIC")
@@ -198,7 +195,7 @@ void Simulation<D>::writeState(const Particles<D>& particles, double time, long 
     writeTimeDirectoryAtomically(options_.caseDir, name, [&](const std::string& tmp) {
         writeParticles(tmp + "/particles.vtp", particles, time, case_->context.materialNames, case_->context.bodyNames);
         if (withGrid) writeGrid(tmp + "/grid.vti", solver_.grid(), time);
-        toolSurfaces_->write(tmp, particles, time);
+        toolSurfaces_->write(tmp, particles, time, solver_.ranks());
         fs::create_directories(tmp + "/uniform");
         std::ofstream t(tmp + "/uniform/time");
         t << fileHeader("time") << "value   " << exactNumber(time) << ";\nname    \"" << name << "\";\nindex   " << step
@@ -333,8 +330,12 @@ void Simulation<D>::indexStart()
         writeGrid((startDir / "grid.vti").string(), solver_.grid(), time_);
     }
     const auto surfaces = toolSurfaces_->fileNames();
-    if (std::any_of(surfaces.begin(), surfaces.end(), [&](const std::string& f) { return !fs::exists(startDir / f); }))
-        toolSurfaces_->write(startDir.string(), solver_.particles(), time_);
+    // Missing on any rank of a parallel run: every rank writes (the pose is a sum over them).
+    std::vector<double> missing{
+        std::any_of(surfaces.begin(), surfaces.end(), [&](const std::string& f) { return !fs::exists(startDir / f); }) ? -1.0 : 0.0};
+    solver_.ranks().minOver(missing);
+    if (missing[0] < 0.0)
+        toolSurfaces_->write(startDir.string(), solver_.particles(), time_, solver_.ranks());
     times_.index(pvd, time_, start);
     pvd.write();
 }

@@ -35,12 +35,13 @@ template <int D> std::vector<std::string> ToolSurfaces<D>::fileNames() const
     return names;
 }
 
-template <int D> void ToolSurfaces<D>::write(const std::string& dir, const Particles<D>& particles, double time) const
+template <int D>
+void ToolSurfaces<D>::write(const std::string& dir, const Particles<D>& particles, double time, const RankReductions& ranks) const
 {
     if constexpr (D == 3) {
         using Vector = Space<3>::Vector;
         for (const Tool& tool : tools_) {
-            const RigidPose pose = RigidPose::of(particles, tool.body);
+            const RigidPose pose = RigidPose::of(particles, tool.body, ranks);
             std::vector<Vector> corners;
             corners.reserve(tool.surface.corners().size());
             for (const Vector& v : tool.surface.corners()) corners.push_back(pose.place(v));
