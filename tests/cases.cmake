@@ -144,7 +144,7 @@ set_tests_properties(decomposeReconstruct PROPERTIES TIMEOUT 300 LABELS integrat
 if(GPIC_WITH_MPI AND GPIC_WITH_3D)
   add_test(NAME parallelRun
            COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/scripts/parallelRun.sh ${PROJECT_SOURCE_DIR} ${PROJECT_BINARY_DIR})
-  set_tests_properties(parallelRun PROPERTIES TIMEOUT 300 LABELS integration)
+  set_tests_properties(parallelRun PROPERTIES TIMEOUT 600 LABELS integration)
 endif()
 
 # One writer per case: a second run refused, a stale lock taken over (tests/scripts/caseLock.sh).

@@ -73,14 +73,20 @@ template <int D> std::size_t SharedNodes<D>::sharedCount() const
 template <int D>
 template <class T, class Add>
 void SharedNodes<D>::combine(T* field, int components, const Communicator& comm, const std::function<bool(int)>& written,
-                             Add add) const
+                             Add add, T none) const
 {
     const std::size_t width = static_cast<std::size_t>(components) * sizeof(T);
+    // A node this rank did not write sends `none`: what a field holds there may be left from
+    // an earlier step (XPIC's iterates are zeroed on the step's nodes only).
+    const std::vector<T> nothing(static_cast<std::size_t>(components), none);
     std::vector<std::vector<char>> send(peers_.size());
     for (std::size_t k = 0; k < peers_.size(); ++k) {
         send[k].resize(shared_[k].size() * width);
-        for (std::size_t m = 0; m < shared_[k].size(); ++m)
-            std::memcpy(send[k].data() + m * width, field + static_cast<std::size_t>(shared_[k][m]) * components, width);
+        for (std::size_t m = 0; m < shared_[k].size(); ++m) {
+            const int n = shared_[k][m];
+            const T* value = written && !written(n) ? nothing.data() : field + static_cast<std::size_t>(n) * components;
+            std::memcpy(send[k].data() + m * width, value, width);
+        }
     }
     const auto received = comm.exchange(peers_, send);
     std::vector<T> own(static_cast<std::size_t>(components)), value(static_cast<std::size_t>(components));
@@ -105,13 +111,13 @@ template <int D>
 void SharedNodes<D>::complete(double* field, int components, const Communicator& comm,
                               const std::function<bool(int)>& written) const
 {
-    combine(field, components, comm, written, [](double a, double b) { return a + b; });
+    combine(field, components, comm, written, [](double a, double b) { return a + b; }, 0.0);
 }
 
 template <int D>
 void SharedNodes<D>::completeMax(int* field, const Communicator& comm, const std::function<bool(int)>& written) const
 {
-    combine(field, 1, comm, written, [](int a, int b) { return std::max(a, b); });
+    combine(field, 1, comm, written, [](int a, int b) { return std::max(a, b); }, -1);
 }
 
 template <int D>

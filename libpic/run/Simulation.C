@@ -96,6 +96,12 @@ double Simulation<D>::parallelCriticalTimeStep() const
     return std::min(terms[0] / (-terms[1] - terms[2]), terms[3]);
 }
 
+template <int D> void Simulation<D>::sumGuardOverRanks()
+{
+    const Communicator& comm = parallel_->communicator();
+    guard_->sumOverRanks([&comm](std::vector<double>& v) { comm.sumInRankOrder(v); });
+}
+
 template <int D>
 void Simulation<D>::setUpParallel()
 {
@@ -103,13 +109,16 @@ void Simulation<D>::setUpParallel()
     const auto refuse = [](const std::string& file, const std::string& what) {
         throw InputError(file, 0, what + ": not yet in a parallel run (doc/parallel.md); run it without -parallel");
     };
-    if (case_->stages) refuse("system/controlDict", "stages");
+    // Stages that run, move a tool or open a gate take their end conditions over the ranks;
+    // those that wake, put to sleep or dig particles keep a pool of their own per rank, which
+    // is not yet decomposed.
+    if (case_->stages && case_->stages->changesParticles())
+        refuse("system/controlDict", "stages that fill, dig or put bodies to sleep (geostaticFill, excavate, `bodies`)");
     for (const auto& f : case_->functions)
         if (!f->servesParallelRuns()) refuse("system/controlDict", "function object " + f->name() + " (bodyMotion, forces and massFlow serve parallel runs so far)");
     if (case_->hasLoads) refuse("constant/loads", "applied loads");
-    // volumetricStrain cellMean needs nothing more: a cell's particles are all its owner's.
-    if (solver_.particles().carries(FieldGroup::affine) || case_->schemes.template getOrDefault<std::string>("transfer", "FLIP") == "XPIC")
-        refuse("system/mpmSchemes", "transfer APIC and XPIC");
+    // volumetricStrain cellMean needs nothing more: a cell's particles are all its owner's;
+    // APIC's affine term goes with the momentum's scatter, XPIC completes its projections.
     if (solver_.particles().carries(FieldGroup::polar)) refuse("constant/materials", "polar (Cosserat) materials");
     const Communicator& comm = *options_.communicator;
     // The layers of nodes beyond its cell a particle reaches: k nodes per axis, (k - 1) / 2.
@@ -119,7 +128,7 @@ void Simulation<D>::setUpParallel()
     parallel_ = std::make_unique<ParallelRun<D>>(comm, grid, options_.caseDir, (perAxis - 1) / 2);
     parallel_->place(solver_);  // a start written before the last re-decomposition
     solver_.setRankSums(parallel_.get());
-    guard_->sumOverRanks([&comm](std::vector<double>& v) { comm.sumInRankOrder(v); });
+    sumGuardOverRanks();
     log() << "Parallel run: rank " << comm.rank() << " of " << comm.size() << ", " << solver_.particles().size()
           << " particles here, " << parallel_->sharedValues() << " node values shared with the neighbours per exchange\n";
 }
@@ -144,6 +153,7 @@ void Simulation<D>::restartGuard()
     auto before = std::move(guard_);
     guard_ = std::make_unique<StabilityGuard<D>>(case_->stability, solver_, case_->context.bodyNames,
                                               case_->stages->gravity(), case_->hasLoads, snapshotFile());
+    if (parallel_) sumGuardOverRanks();
     guard_->start(time_, step_);
     if (before) guard_->continueStatistics(*before);
     kineticRatioWarned_ = false;

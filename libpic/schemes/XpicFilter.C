@@ -79,6 +79,7 @@ void XpicFilter<D>::at(StepPoint, EngineView<D>& e, double dt)
             if (isRigidField(f)) continue;
             const double* mass = coupling.mass(grid, f).data();
             std::vector<Vector>& next = scratch_[2 * f + 1];
+            if (e.rankSums) e.rankSums->complete(grid, next);  // a parallel run: the other ranks' parts
             Vector* projected = next.data();
             grid.forEachActiveNode([=](int n) {
                 projected[n] = mass[n] > 0.0 ? Vector(projected[n] / mass[n]) : Vector::Zero();

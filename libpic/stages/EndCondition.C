@@ -75,7 +75,9 @@ double EndCondition<D>::maxSpeed(const MpmSolver<D>& solver)
     double v2 = 0;
     for (std::size_t q = 0; q < p.size(); ++q)
         if (!solver.rigidBody(p.body[q])) v2 = std::max(v2, p.v[q].squaredNorm());
-    return std::sqrt(v2);
+    std::vector<double> fastest{-v2};  // a parallel run: over every rank, the maximum as a minimum
+    solver.ranks().minOver(fastest);
+    return std::sqrt(-fastest[0]);
 }
 
 template <int D>
@@ -89,6 +91,13 @@ typename Space<D>::Vector EndCondition<D>::centreOf(const MpmSolver<D>& solver, 
             m += p.m[q];
             c += p.m[q] * p.x[q];
         }
+    if (solver.ranks().parallel()) {  // every rank's particles of the body
+        std::vector<double> sums{m};
+        sums.insert(sums.end(), c.data(), c.data() + D);
+        solver.sumOverRanks(sums);
+        m = sums[0];
+        for (int a = 0; a < D; ++a) c[a] = sums[1 + a];
+    }
     return m > 0 ? Vector(c / m) : c;
 }
 

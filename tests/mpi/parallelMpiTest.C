@@ -3,6 +3,8 @@
 //   ((v0 + v1) + v2) + v3, computed here from the values each rank is known to give;
 // - the nodal sums on shared nodes, completed by SharedNodes, are the same rank-ordered sums
 //   on every rank that reaches the node, and a node one rank alone reaches keeps its value;
+// - a node a rank did not write this step adds nothing to its neighbours' sums, whatever its
+//   array holds there; the largest value (a rigid body's id) and the nodes touched are shared;
 // - particles packed on one rank and sent arrive bit for bit on another;
 // - the smallest value over the ranks is the time step's.
 #include "parallel/Communicator.H"
@@ -68,6 +70,63 @@ TEST(ParallelMpi, sharedNodesHoldTheRankOrderedSum)
             }
         }
     }
+}
+
+TEST(ParallelMpi, nodesARankDidNotWriteTakeNoPartAndMarksAreShared)
+{
+    const Grid<2> grid(Eigen::Vector2d(0, 0), Eigen::Vector2d(0.1, 0.1), {8, 6});
+    DecompositionSettings s;
+    s.subdomains = world->size();
+    s.method = DecompositionSettings::Method::hierarchical;
+    s.n = {world->size(), 1, 1};
+    const auto owner = decomposeCells(grid, std::vector<int>(static_cast<std::size_t>(grid.nCells()), 1), s);
+    std::vector<SharedNodes<2>> all;
+    for (int r = 0; r < world->size(); ++r) all.emplace_back(grid, owner, r, 0);
+    const SharedNodes<2>& mine = all[world->rank()];
+    // Rank r writes the nodes (i, j) with (i + j + r) % 3 != 0 (on a shared node one rank, or
+    // several); elsewhere its field holds a stale 1e6 (an iterate left from an earlier step),
+    // which must not reach a neighbour's sum.
+    const auto writes = [&grid](int r, int n) {
+        const auto i = grid.nodeIndex(n);
+        return (i[0] + i[1] + r) % 3 != 0;
+    };
+    const int me = world->rank();
+    std::vector<double> field(static_cast<std::size_t>(grid.nNodes()), 1e6);
+    std::vector<int> body(static_cast<std::size_t>(grid.nNodes()), -1);
+    for (int n = 0; n < grid.nNodes(); ++n)
+        if (writes(me, n)) field[n] = valueOf(me, n), body[n] = me;
+    const auto written = [&](int n) { return writes(me, n); };
+    mine.complete(field.data(), 1, *world, written);
+    mine.completeMax(body.data(), *world, written);
+    std::vector<int> marked;
+    mine.shareMarks(written, [&](int n) { marked.push_back(n); }, *world);
+    for (int n = 0; n < grid.nNodes(); ++n) {
+        if (!mine.reaches(n) || !writes(me, n)) continue;
+        double expected = 0;
+        bool first = true;
+        int largest = -1;
+        for (int r = 0; r < world->size(); ++r) {
+            if (!all[r].reaches(n)) continue;
+            const double v = writes(r, n) ? valueOf(r, n) : 0.0;
+            expected = first ? v : expected + v, first = false;
+            if (writes(r, n)) largest = std::max(largest, r);
+        }
+        ASSERT_EQ(field[n], expected) << "node " << n;
+        ASSERT_EQ(body[n], largest) << "node " << n;
+    }
+    // Marked here: exactly the nodes this rank reaches and did not write, which a rank that
+    // shares them wrote; in ascending order.
+    std::vector<int> expected;
+    for (int n = 0; n < grid.nNodes(); ++n) {
+        if (!mine.reaches(n) || writes(me, n)) continue;
+        for (int r = 0; r < world->size(); ++r)
+            if (r != me && all[r].reaches(n) && writes(r, n)) {
+                expected.push_back(n);
+                break;
+            }
+    }
+    EXPECT_EQ(marked, expected);
+    if (world->size() > 1) EXPECT_FALSE(expected.empty());
 }
 
 TEST(ParallelMpi, particlesArriveBitForBit)
