@@ -84,15 +84,17 @@ Simulation<D>::Simulation(const RunOptions& options, std::unique_ptr<Case<D>> c)
 }
 
 template <int D>
-double Simulation<D>::parallelCriticalTimeStep() const
+double Simulation<D>::parallelCriticalTimeStep()
 {
     // MpmSolver::criticalTimeStep's terms over every rank: the shortest step length over the
     // fastest wave and particle, the passes' smallest step. Minima and maxima are exact, so
-    // the step is the serial run's to the bit.
+    // the step is the serial run's to the bit. With them the stop signal any rank has had:
+    // every rank then stops at the end of the same step.
     // One exchange a step: the maxima as minima of the negated values.
     std::vector<double> terms{solver_.stepLength(), -solver_.maxWaveSpeed(), -solver_.maxParticleSpeed(),
-                              solver_.passTimeStep()};
+                              solver_.passTimeStep(), -double(StopSignals::received())};
     parallel_->min(terms);
+    stopSignal_ = static_cast<int>(-terms[4]);
     return std::min(terms[0] / (-terms[1] - terms[2]), terms[3]);
 }
 
@@ -439,7 +441,8 @@ StageEvent Simulation<D>::afterStep()
 template <int D>
 void Simulation<D>::honourStopSignal(bool writtenLast, Clock::time_point wallStart)
 {
-    const int signal = StopSignals::received();
+    // A parallel run: the signal the ranks agreed on when the step began.
+    const int signal = parallel_ ? stopSignal_ : StopSignals::received();
     if (!signal) return;
     if (!writtenLast) write();
     // The wall time too: a run made in segments adds them up (gpicdat.run_in_segments).

@@ -211,6 +211,29 @@ grep "decomposed again" $work/spread/log.parallel
 cmp -s $work/spread/processor0/constant/cellDecomposition $work/spread/processor1/constant/cellDecomposition ||
     fail "the ranks wrote different decompositions"
 
+# A stop signal that reaches one rank alone (as a scheduler's may): every rank stops at the end
+# of the same step and writes it, none waits for the others.
+prepare geotechnics/columnCollapse $work/stop 100 50 hierarchical 2 "hierarchicalCoeffs { n (2 1); }"
+c=$work/stop
+(cd $c && exec mpirun --oversubscribe --allow-run-as-root -np 2 picSolver -parallel > log.parallel 2>&1) &
+runner=$!
+for i in $(seq 150); do grep -q "Parallel run: rank 0 of" $c/log.parallel 2> /dev/null && break; sleep 0.2; done
+sleep 1
+ranks=($(pgrep -P $runner))
+[ ${#ranks[@]} = 2 ] || fail "stop: mpirun's two ranks not found (${ranks[*]:-none})"
+kill -TERM ${ranks[1]}
+status=0
+wait $runner || status=$?
+[ $status != 0 ] || fail "stop: the run ended without the signal"
+grep -q "run stopped by SIGTERM" $c/log.parallel || fail "stop: $(grep -m1 Error $c/log.parallel)"
+# (the two ranks' messages may share a line of the log: the written states tell)
+newest() { (cd $1 && ls -d [0-9]* | sort -g | tail -1); }
+t0=$(newest $c/processor0) t1=$(newest $c/processor1)
+step() { grep -o 'index *[0-9]*' $c/processor$1/$2/uniform/time; }
+[ "$t0" = "$t1" ] && [ "$t0" != 0 ] && [ "$(step 0 $t0)" = "$(step 1 $t1)" ] ||
+    fail "stop: the ranks stopped apart: times $t0 ($(step 0 $t0)) and $t1 ($(step 1 $t1))"
+echo "stop: both ranks wrote time $t0, $(step 0 $t0)"
+
 # Refused: a decomposition for another rank count; what a parallel run does not do yet.
 c=$work/cylinder
 out=$(cd $c && mpi 2 picSolver -parallel 2>&1) && fail "4 subdomains run on 2 ranks"
