@@ -33,11 +33,13 @@ void ToolFill::start(const MpmSolver<2>& solver, double time)
         throw InputError(file_, line_, "toolFill " + name() + ": '" + bodyName_ +
                                            "' is not a rigid body (constant/rigidBodies)");
     factor_ = rowFactor(givenFactor_, solver.grid());
-    std::ofstream& os = file("fill.dat");
-    os << "# mass inside the region fixed to '" << bodyName_ << "' [kg per "
-       << (solver.grid().axisymmetric() ? "radian" : "metre") << " times factor " << factor_
-       << "], its displacement [m], the path length it has travelled [m] and its rotation [deg]\n"
-          "# time mass dx dy travel rotation\n";
+    if (solver.writesFiles()) {  // a parallel run: rank 0
+        std::ofstream& os = file("fill.dat");
+        os << "# mass inside the region fixed to '" << bodyName_ << "' [kg per "
+           << (solver.grid().axisymmetric() ? "radian" : "metre") << " times factor " << factor_
+           << "], its displacement [m], the path length it has travelled [m] and its rotation [deg]\n"
+              "# time mass dx dy travel rotation\n";
+    }
     if (!restarted()) write(solver, time);
 }
 
@@ -67,6 +69,10 @@ void ToolFill::write(const MpmSolver<2>& solver, double time)
                                               : std::find(counted_.begin(), counted_.end(), p.body[q]) != counted_.end();
         if (counted && region_->inside(atStart(p.x[q], c, s))) mass += p.m[q];
     }
+    std::vector<double> sum{mass};  // a parallel run: every rank's particles
+    solver.sumOverRanks(sum);
+    mass = sum[0];
+    if (!solver.writesFiles()) return;
     const Vector2 d = reference_ - reference0_;
     std::ofstream& os = file("fill.dat");
     os << time << ' ' << factor_ * mass << ' ' << d.x() << ' ' << d.y() << ' ' << travel_ << ' '

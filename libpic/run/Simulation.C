@@ -117,7 +117,7 @@ void Simulation<D>::setUpParallel()
     if (case_->stages && case_->stages->changesParticles())
         refuse("system/controlDict", "stages that fill, dig or put bodies to sleep (geostaticFill, excavate, `bodies`)");
     for (const auto& f : case_->functions)
-        if (!f->servesParallelRuns()) refuse("system/controlDict", "function object " + f->name() + " (bodyMotion, forces and massFlow serve parallel runs so far)");
+        if (!f->servesParallelRuns()) refuse("system/controlDict", "function object " + f->name() + " (bodyMotion, forces, massFlow and toolFill serve parallel runs so far)");
     if (case_->hasLoads) refuse("constant/loads", "applied loads");
     // volumetricStrain cellMean needs nothing more: a cell's particles are all its owner's;
     // APIC's affine term goes with the momentum's scatter, XPIC completes its projections.

@@ -156,7 +156,18 @@ moves=no compare $work/footing 2 0.15 0.3
 # 4 mm at 0.5 m/s, the blade and the sand ahead of it cross into the second.
 prepare geotechnics/blade $work/blade 0.008 0.004 simple 3 "simpleCoeffs { n (3 1); }"
 sed -i 's/velocity (0.005 0)/velocity (0.5 0)/' $work/blade/constant/rigidBodies $work/blade/processor*/constant/rigidBodies
-sed -i 's/writeInterval 1250;/writeInterval 100;/' $work/blade/system/controlDict $work/blade/processor*/system/controlDict
+# ... and the sand in a box ahead of it (toolFill: a sum over every rank's particles)
+for f in $work/blade/system/controlDict $work/blade/processor*/system/controlDict; do
+    python3 - $f <<'END'
+import re, sys
+s = open(sys.argv[1]).read().replace('writeInterval 1250;', 'writeInterval 100;')
+fill = 'fill { type toolFill; body blade; bodies (soil); writeInterval 100; region { type rectangle; min (0.32 0.3); max (0.42 0.45); } }'
+s, n = re.subn(r'\nfunctions\s*\{', '\nfunctions\n{\n    ' + fill, s)
+if n != 1:
+    sys.exit('no functions in ' + sys.argv[1])
+open(sys.argv[1], 'w').write(s)
+END
+done
 compare $work/blade 3 0.004 0.008
 
 # The silo (seed 4.6) in its two stages, a damped settling with the outlet closed and the
