@@ -243,6 +243,25 @@ void Simulation<D>::write()
     writeState(solver_.particles(), time_, step_, deltaT_, solver_.removedMass(), name);
     guard_->stateWritten((fs::path(options_.caseDir) / name / "particles.vtp").string(), time_, step_, deltaT_);
     times_.written(time_, step_, name);
+    indexProcessors();
+}
+
+template <int D> void Simulation<D>::indexProcessors() const
+{
+    // A parallel run: rank 0 lists every rank's files of each time in <case>/processors.pvd,
+    // one part per rank and file, so that ParaView opens the whole decomposed run as one time
+    // series. The ranks write the same time directories: rank 0's index names them all.
+    if (!parallel_ || parallel_->communicator().rank() != 0) return;
+    const PvdCollection mine(pvdPath(options_.caseDir));
+    int parts = 1;
+    for (const PvdEntry& e : mine.entries()) parts = std::max(parts, e.part + 1);
+    const fs::path all = fs::path(options_.caseDir).parent_path() / "processors.pvd";
+    fs::remove(all);  // written afresh from rank 0's index
+    PvdCollection pvd(all.string());
+    for (const PvdEntry& e : mine.entries())
+        for (int r = 0; r < parallel_->communicator().size(); ++r)
+            pvd.add(e.time, "processor" + std::to_string(r) + "/" + e.file, r * parts + e.part);
+    pvd.write();
 }
 
 template <int D>
@@ -260,6 +279,7 @@ void Simulation<D>::stop(const std::optional<StabilityTrip>& trip, const std::st
                 writeGoodStateGrid(std::move(particles), good.time,
                                    (fs::path(options_.caseDir) / name / "grid.vti").string());
             times_.writtenOutOfTurn(good.time, good.step, name);
+            indexProcessors();
         }
         where << "; last good state: time " << times_.newest().time << " s (step " << times_.newest().step
               << ") in " << times_.newestPath();
@@ -350,6 +370,7 @@ void Simulation<D>::indexStart()
         toolSurfaces_->write(startDir.string(), solver_.particles(), time_, solver_.ranks());
     times_.index(pvd, time_, start);
     pvd.write();
+    indexProcessors();
 }
 
 template <int D>

@@ -120,6 +120,18 @@ print('%s: %d rows, %d values apart beyond their printed digits %s' % (sys.argv[
 sys.exit(0 if not bad else 1)
 END
     done
+    # ParaView's index of the decomposed run: every rank's particles at each time written.
+    python3 - $c/processors.pvd $ranks "$@" <<'END' || fail "$c: processors.pvd"
+import os, sys, xml.etree.ElementTree as ET
+path, ranks, times = sys.argv[1], int(sys.argv[2]), sys.argv[3:]
+sets = ET.parse(path).getroot().iter('DataSet')
+files = {d.get('file') for d in sets}
+missing = ['processor%d/%s/particles.vtp' % (r, t) for r in range(ranks) for t in times
+           if 'processor%d/%s/particles.vtp' % (r, t) not in files]
+absent = [f for f in files if not os.path.exists(os.path.join(os.path.dirname(path), f))]
+print('%s: %d files, %d of the written times missing, %d absent' % (path, len(files), len(missing), len(absent)))
+sys.exit(1 if missing or absent else 0)
+END
     # The ranks' particles changed hands: rank 0 ends with another count than it started with.
     start=$(grep -o 'rank 0 of [0-9]*, [0-9]* particles' $c/log.parallel | grep -o '[0-9]* particles')
     end=$(grep -o '^End: .* steps, [0-9]* particles' $c/log.parallel | grep -o '[0-9]* particles$')
