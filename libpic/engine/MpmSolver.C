@@ -210,17 +210,24 @@ void MpmSolver<D>::setUpParticles()
             throw RunError("particle material id " + std::to_string(b.material) +
                            " has no material in constant/materials");
     markDeformingMaterials();
-    // The small-mass cut-off follows the lightest particle present. A parallel run takes it
-    // over every rank once, at the start: particles handed between ranks leave it as it is.
-    if (ranks_.parallel() && minNodalMass_ > 0.0) return;
+    // The small-mass cut-off follows the lightest particle present. In a parallel run it is
+    // a minimum over the ranks, taken at the start and where the run's particles change
+    // (updateSmallMassCutoff, on every rank), not where particles only change hands.
+    if (!ranks_.parallel() || !cutoffTaken_) updateSmallMassCutoff();
+}
+
+template <int D>
+void MpmSolver<D>::updateSmallMassCutoff()
+{
     double lightest = 0;
     for (double m : particles_.m) lightest = lightest == 0 ? m : std::min(lightest, m);
     if (ranks_.parallel()) {  // every rank's lightest: the same cut-off as the serial run
-        std::vector<double> m{lightest > 0 ? lightest : std::numeric_limits<double>::max()};
-        ranks_.minOver(m);
-        lightest = m[0] < std::numeric_limits<double>::max() ? m[0] : 0.0;
+        const double none = std::numeric_limits<double>::max();
+        lightest = ranks_.smallest(lightest > 0 ? lightest : none);
+        if (lightest == none) lightest = 0.0;
     }
     minNodalMass_ = 1e-9 * lightest;
+    cutoffTaken_ = true;
 }
 
 template <int D>

@@ -6,6 +6,7 @@
 #include "parallel/ParticlePacking.H"
 
 #include <algorithm>
+#include <numeric>
 #include <cstdio>
 
 namespace gpic {
@@ -91,12 +92,27 @@ template <int D> std::vector<int> ParallelRun<D>::allPeers() const
     return peers;
 }
 
-template <int D> void ParallelRun<D>::place(MpmSolver<D>& solver) { handOver(solver, allPeers()); }
+template <int D> void ParallelRun<D>::place(MpmSolver<D>& solver, Particles<D>* dormant)
+{
+    handOver(solver, allPeers());
+    if (!dormant) return;
+    if (auto next = handOver(solver.grid(), *dormant, allPeers())) {
+        std::vector<std::size_t> byId(next->size());
+        std::iota(byId.begin(), byId.end(), std::size_t(0));
+        std::stable_sort(byId.begin(), byId.end(), [&](std::size_t a, std::size_t b) { return next->id[a] < next->id[b]; });
+        next->reorder(byId);
+        *dormant = std::move(*next);
+    }
+}
 
 template <int D> void ParallelRun<D>::handOver(MpmSolver<D>& solver, const std::vector<int>& peers)
 {
-    const Grid<D>& grid = solver.grid();
-    const Particles<D>& p = solver.particles();
+    if (auto next = handOver(solver.grid(), solver.particles(), peers)) solver.replaceParticles(std::move(*next));
+}
+
+template <int D>
+std::optional<Particles<D>> ParallelRun<D>::handOver(const Grid<D>& grid, const Particles<D>& p, const std::vector<int>& peers)
+{
     std::vector<std::vector<std::size_t>> leaving(peers.size());
     std::vector<std::size_t> staying;
     staying.reserve(p.size());
@@ -123,14 +139,14 @@ template <int D> void ParallelRun<D>::handOver(MpmSolver<D>& solver, const std::
     const std::size_t header = packParticles(p, {}).size();
     if (staying.size() == p.size() &&
         std::all_of(arrived.begin(), arrived.end(), [header](const std::vector<char>& b) { return b.size() == header; }))
-        return;  // nothing left or came: the particles stay as they are, in their order
+        return std::nullopt;  // nothing left or came: the particles stay as they are, in their order
     Particles<D> next = p;
     next.reorder(staying);
     for (const auto& bytes : arrived) received_ += static_cast<long>(unpackParticles(bytes, next));
-    solver.replaceParticles(std::move(next));
+    return next;
 }
 
-template <int D> std::string ParallelRun<D>::rebalance(MpmSolver<D>& solver, long step)
+template <int D> std::string ParallelRun<D>::rebalance(MpmSolver<D>& solver, long step, Particles<D>* dormant)
 {
     if (settings_.redecomposeInterval <= 0 || step % settings_.redecomposeInterval != 0) return "";
     const int ranks = comm_.size();
@@ -156,7 +172,7 @@ template <int D> std::string ParallelRun<D>::rebalance(MpmSolver<D>& solver, lon
     writeCellDecomposition(file_, decomposition_);
     shared_ = std::make_unique<SharedNodes<D>>(grid, decomposition_.owner, comm_.rank(), reach_);
     const long sentBefore = sent_;
-    place(solver);
+    place(solver, dormant);
     std::vector<double> moved{static_cast<double>(sent_ - sentBefore)};
     comm_.sumInRankOrder(moved);
     const double after = imbalance(solver.particles().size());

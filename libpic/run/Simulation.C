@@ -98,6 +98,11 @@ double Simulation<D>::parallelCriticalTimeStep()
     return std::min(terms[0] / (-terms[1] - terms[2]), terms[3]);
 }
 
+template <int D> Particles<D>* Simulation<D>::dormant()
+{
+    return case_->stages ? &case_->stages->pool().dormant() : nullptr;
+}
+
 template <int D> void Simulation<D>::sumGuardOverRanks()
 {
     const Communicator& comm = parallel_->communicator();
@@ -111,11 +116,8 @@ void Simulation<D>::setUpParallel()
     const auto refuse = [](const std::string& file, const std::string& what) {
         throw InputError(file, 0, what + ": not yet in a parallel run (doc/parallel.md); run it without -parallel");
     };
-    // Stages that run, move a tool or open a gate take their end conditions over the ranks;
-    // those that wake, put to sleep or dig particles keep a pool of their own per rank, which
-    // is not yet decomposed.
-    if (case_->stages && case_->stages->changesParticles())
-        refuse("system/controlDict", "stages that fill, dig or put bodies to sleep (geostaticFill, excavate, `bodies`)");
+    // Stages take their end conditions and layers over the ranks; each rank keeps the
+    // sleeping particles of its cells.
     for (const auto& f : case_->functions)
         if (!f->servesParallelRuns()) refuse("system/controlDict", "function object " + f->name() + " (bodyMotion, forces, massFlow and toolFill serve parallel runs so far)");
     if (case_->hasLoads) refuse("constant/loads", "applied loads");
@@ -128,7 +130,7 @@ void Simulation<D>::setUpParallel()
     while (std::pow(perAxis + 1, D) <= solver_.nodesPerParticle() + 0.5) ++perAxis;
     const Grid<D>& grid = solver_.grid();
     parallel_ = std::make_unique<ParallelRun<D>>(comm, grid, options_.caseDir, (perAxis - 1) / 2);
-    parallel_->place(solver_);  // a start written before the last re-decomposition
+    parallel_->place(solver_, dormant());  // a start written before the last re-decomposition
     solver_.setRankSums(parallel_.get());
     sumGuardOverRanks();
     log() << "Parallel run: rank " << comm.rank() << " of " << comm.size() << ", " << solver_.particles().size()
@@ -338,6 +340,7 @@ long Simulation<D>::run()
         }
         if (stage == StageEvent::ended) {
             case_->stages->beginNext(solver_, time_, step_);
+            if (parallel_) solver_.updateSmallMassCutoff();  // the stage's particles, on every rank
             restartGuard();
         }
         honourStopSignal(writtenLast, wallStart);
@@ -383,6 +386,7 @@ void Simulation<D>::startParts()
             log() << "Function object " << f->name() << ": " << dropped << " rows after t = " << time_
                   << " s of an earlier run dropped\n";
     if (case_->stages) case_->stages->start(solver_, time_, step_);  // begins a stage, or carries one on
+    if (case_->stages && parallel_) solver_.updateSmallMassCutoff();
     for (auto& f : case_->functions) f->start(solver_, time_);
     if (case_->stages) {
         restartGuard();
@@ -413,7 +417,7 @@ void Simulation<D>::takeStep()
         solver_.endStep(deltaT_);
         if (parallel_) {  // the guard's account is over every rank: moves carry no energy
             parallel_->migrate(solver_);
-            const std::string rebalanced = parallel_->rebalance(solver_, step_ + 1);
+            const std::string rebalanced = parallel_->rebalance(solver_, step_ + 1, dormant());
             if (!rebalanced.empty()) log() << "Parallel run: " << rebalanced << "\n";
         }
     } catch (const RunError& e) {
@@ -455,6 +459,7 @@ StageEvent Simulation<D>::afterStep()
     }
     if (!case_->stages) return StageEvent::none;
     const StageEvent stage = case_->stages->afterStep(solver_, time_, step_, deltaT_);
+    if (stage == StageEvent::particlesChanged && parallel_) solver_.updateSmallMassCutoff();
     if (stage == StageEvent::particlesChanged) guard_->start(time_, step_);
     return stage;
 }

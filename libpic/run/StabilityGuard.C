@@ -160,9 +160,7 @@ void StabilityGuard<D>::start(double t, long step, const std::string& onDisk)
         const double c = m->waveSpeed();
         compliance.push_back(c > 0 && m->rho() > 0 ? 1.0 / (2.0 * m->rho() * c * c) : 0.0);
     }
-    std::vector<double> fastest{-solver_.maxWaveSpeed()};  // a parallel run: over every rank
-    solver_.ranks().minOver(fastest);
-    const double cMax = -fastest[0];
+    const double cMax = solver_.ranks().largest(solver_.maxWaveSpeed());  // a parallel run: over every rank
     double elastic = 0, mass = 0;
     for (std::size_t q = 0; q < p.size(); ++q) {
         if (isRigid(q)) continue;

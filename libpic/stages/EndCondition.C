@@ -75,9 +75,7 @@ double EndCondition<D>::maxSpeed(const MpmSolver<D>& solver)
     double v2 = 0;
     for (std::size_t q = 0; q < p.size(); ++q)
         if (!solver.rigidBody(p.body[q])) v2 = std::max(v2, p.v[q].squaredNorm());
-    std::vector<double> fastest{-v2};  // a parallel run: over every rank, the maximum as a minimum
-    solver.ranks().minOver(fastest);
-    return std::sqrt(-fastest[0]);
+    return std::sqrt(solver.ranks().largest(v2));  // a parallel run: over every rank
 }
 
 template <int D>

@@ -58,13 +58,18 @@ bool ExcavateStage<D>::digLayer(MpmSolver<D>& solver, ParticlePool<D>& pool, dou
     double highest = -std::numeric_limits<double>::infinity();
     for (std::size_t q = 0; q < p.size(); ++q)
         if (inRegion(p, q)) highest = std::max(highest, p.x[q][D - 1]);
+    highest = solver.ranks().largest(highest);  // a parallel run: every rank's particles
     if (highest == -std::numeric_limits<double>::infinity()) return false;
     // The band of the highest particle left: bands of layerThickness down from the top.
     band_ = std::max(band_ + 1, static_cast<long>(std::floor((top_ - highest) / thickness_ + 1e-9)));
     const double bottom = top_ - (band_ + 1) * thickness_;
     std::size_t count = 0;
-    const double mass = pool.remove(
-        solver, [&](const Particles<D>& s, std::size_t q) { return inRegion(s, q) && s.x[q][D - 1] >= bottom; }, &count);
+    std::vector<double> dug{pool.remove(
+        solver, [&](const Particles<D>& s, std::size_t q) { return inRegion(s, q) && s.x[q][D - 1] >= bottom; }, &count)};
+    dug.push_back(static_cast<double>(count));
+    solver.sumOverRanks(dug);
+    const double mass = dug[0];
+    count = static_cast<std::size_t>(dug[1]);
     removed_ += mass;
     ++layers_;
     until().start(solver, t, step);
@@ -80,6 +85,7 @@ StageEvent ExcavateStage<D>::started(MpmSolver<D>& solver, ParticlePool<D>& pool
     top_ = -std::numeric_limits<double>::infinity();
     for (std::size_t q = 0; q < p.size(); ++q)
         if (inRegion(p, q)) top_ = std::max(top_, p.x[q][D - 1] + p.halfSize[q][D - 1]);
+    top_ = solver.ranks().largest(top_);
     if (top_ == -std::numeric_limits<double>::infinity()) return end("nothing to dig in the region");
     if (!digLayer(solver, pool, t, step)) return end("nothing to dig in the region");
     return StageEvent::particlesChanged;

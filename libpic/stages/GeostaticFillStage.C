@@ -72,6 +72,7 @@ bool GeostaticFillStage<D>::addLayer(MpmSolver<D>& solver, ParticlePool<D>& pool
     double lowest = std::numeric_limits<double>::infinity();
     for (std::size_t q = 0; q < sleeping.size(); ++q)
         if (waiting(sleeping, q)) lowest = std::min(lowest, height(sleeping, q));
+    lowest = solver.ranks().smallest(lowest);  // a parallel run: every rank's sleeping particles
     if (!std::isfinite(lowest)) return false;
     // The band of the lowest waiting particle: bands of layerThickness from the grid's lowest corner.
     const Vector &lo = setup().gridMin, &hi = setup().gridMax;
@@ -84,15 +85,20 @@ bool GeostaticFillStage<D>::addLayer(MpmSolver<D>& solver, ParticlePool<D>& pool
     band_ = std::max(band_ + 1, static_cast<long>(std::floor((lowest - y0) / thickness_ + 1e-9)));
     const double top = y0 + (band_ + 1) * thickness_;
     const double g = gravity().norm();
+    const auto wakes = [&](const Particles<D>& p, std::size_t q) { return waiting(p, q) && height(p, q) < top; };
+    // The free surface of the new layer: the top of its particles' domains (over every rank's).
     double surface = -std::numeric_limits<double>::infinity();
-    std::size_t count = 0;
+    double count = 0;
+    for (std::size_t q = 0; q < sleeping.size(); ++q)
+        if (wakes(sleeping, q)) {
+            surface = std::max(surface, height(sleeping, q) + sleeping.halfSize[q].cwiseProduct(u).cwiseAbs().sum());
+            ++count;
+        }
+    surface = solver.ranks().largest(surface);
+    count = solver.ranks().total(count);
     pool.exchange(
-        solver, [](const Particles<D>&, std::size_t) { return false; },
-        [&](const Particles<D>& p, std::size_t q) { return waiting(p, q) && height(p, q) < top; },
+        solver, [](const Particles<D>&, std::size_t) { return false; }, wakes,
         [&](Particles<D>& p, std::size_t begin, std::size_t end) {
-            // The free surface of the new layer: the top of its particles' domains.
-            for (std::size_t q = begin; q < end; ++q)
-                surface = std::max(surface, height(p, q) + p.halfSize[q].cwiseProduct(u).cwiseAbs().sum());
             for (std::size_t q = begin; q < end; ++q) {
                 const double rho = solver.materials()[static_cast<std::size_t>(p.material[q])]->rho();
                 const double sV = -rho * g * std::max(0.0, surface - height(p, q));  // eq. 3.3.4, along gravity
@@ -113,11 +119,10 @@ bool GeostaticFillStage<D>::addLayer(MpmSolver<D>& solver, ParticlePool<D>& pool
                 }
                 p.v[q].setZero();
             }
-            count = end - begin;
         });
     ++layers_;
     until().start(solver, t, step);
-    info() << "Stage " << name() << ": layer " << layers_ << ", " << count << " particles up to "
+    info() << "Stage " << name() << ": layer " << layers_ << ", " << static_cast<long>(count) << " particles up to "
            << (D == 2 && u.x() == 0.0 ? "x2" : D == 3 && u.x() == 0.0 && u.y() == 0.0 ? "x3" : "height") << " = " << surface << " m, t = " << t << " s\n";
     return true;
 }

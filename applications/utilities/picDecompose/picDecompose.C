@@ -2,7 +2,8 @@
 // reads system/decomposeParDict, gives every cell of the grid an owner (parallel/
 // Decomposition.H) and writes each subdomain as a case of its own for its rank: processor<N>/
 // with the case's system/ and constant/, constant/cellDecomposition, and the subdomain's
-// particles of the chosen time, processor<N>/<time>/particles.vtp, with the rest of that
+// particles of the chosen time, processor<N>/<time>/particles.vtp (and a run in stages'
+// sleeping particles, dormant.vtp, by their cells likewise), with the rest of that
 // time directory (uniform/, the tools' surfaces). Prints each subdomain's
 // particles and cells and the imbalance. doc/parallel.md.
 #include "applicationMain.H"
@@ -33,18 +34,32 @@ template <int D> void decompose(const std::string& caseDir, const std::string& t
     const gpic::Dictionary parDict = gpic::readCaseFile(caseDir, "system/decomposeParDict");
     const gpic::DecompositionSettings settings = gpic::readDecomposeParDict(parDict, D);
 
-    gpic::Particles<D> particles;
-    double t = 0;
-    std::vector<std::string> materials, bodies;
+    // The particles of the time and, in a run in stages, its sleeping ones: both by cell, both
+    // weigh (the sleeping ones wake where they lie).
     const fs::path timeDir = fs::path(caseDir) / time;
-    gpic::readParticles((timeDir / "particles.vtp").string(), particles, t, &materials, &bodies);
-    std::vector<int> cellOf(particles.size()), perCell(static_cast<std::size_t>(grid.nCells()), 0);
-    for (std::size_t p = 0; p < particles.size(); ++p) {
-        if (!grid.contains(particles.x[p]))
-            throw gpic::InputError((timeDir / "particles.vtp").string(), 0,
-                                   "particle " + std::to_string(particles.id[p]) + " lies outside the grid");
-        cellOf[p] = gpic::cellNumber(grid, grid.cellOf(particles.x[p]));
-        ++perCell[cellOf[p]];
+    struct Set {
+        std::string file;
+        gpic::Particles<D> particles;
+        double t = 0;
+        std::vector<std::string> materials, bodies;
+        std::vector<int> cellOf;
+        std::vector<std::vector<std::size_t>> members;
+    };
+    std::vector<Set> sets;
+    std::vector<int> perCell(static_cast<std::size_t>(grid.nCells()), 0);
+    for (const char* file : {"particles.vtp", "dormant.vtp"}) {
+        if (std::string(file) == "dormant.vtp" && !fs::exists(timeDir / file)) continue;
+        Set& set = sets.emplace_back();
+        set.file = file;
+        const std::string path = (timeDir / file).string();
+        gpic::readParticles(path, set.particles, set.t, &set.materials, &set.bodies);
+        set.cellOf.resize(set.particles.size());
+        for (std::size_t p = 0; p < set.particles.size(); ++p) {
+            if (!grid.contains(set.particles.x[p]))
+                throw gpic::InputError(path, 0, "particle " + std::to_string(set.particles.id[p]) + " lies outside the grid");
+            set.cellOf[p] = gpic::cellNumber(grid, grid.cellOf(set.particles.x[p]));
+            ++perCell[set.cellOf[p]];
+        }
     }
     gpic::CellDecomposition decomposition{settings.subdomains, gpic::decomposeCells(grid, perCell, settings)};
 
@@ -55,8 +70,10 @@ template <int D> void decompose(const std::string& caseDir, const std::string& t
                                       "(picDecompose -force removes every processor<N> first)");
     for (const auto& dir : existing) fs::remove_all(dir);
 
-    std::vector<std::vector<std::size_t>> members(static_cast<std::size_t>(settings.subdomains));
-    for (std::size_t p = 0; p < particles.size(); ++p) members[decomposition.owner[cellOf[p]]].push_back(p);
+    for (Set& set : sets) {
+        set.members.resize(static_cast<std::size_t>(settings.subdomains));
+        for (std::size_t p = 0; p < set.particles.size(); ++p) set.members[decomposition.owner[set.cellOf[p]]].push_back(p);
+    }
     std::vector<int> cells(static_cast<std::size_t>(settings.subdomains), 0);
     for (int o : decomposition.owner) ++cells[o];
     for (int k = 0; k < settings.subdomains; ++k) {
@@ -73,14 +90,21 @@ template <int D> void decompose(const std::string& caseDir, const std::string& t
         fs::create_directories(tmp);
         for (const auto& entry : fs::directory_iterator(timeDir)) {
             const std::string name = entry.path().filename().string();
-            if (name == "particles.vtp" || name == "grid.vti") continue;  // the grid's fields are each rank's own
+            // the particles are split below; the grid's fields are each rank's own
+            if (name == "particles.vtp" || name == "dormant.vtp" || name == "grid.vti") continue;
             fs::copy(entry.path(), tmp / name, fs::copy_options::recursive);
         }
-        gpic::Particles<D> mine = particles;
-        mine.reorder(members[k]);
-        gpic::writeParticles((tmp / "particles.vtp").string(), mine, t, materials, bodies);
+        for (const Set& set : sets) {
+            gpic::Particles<D> mine = set.particles;
+            mine.reorder(set.members[k]);
+            // A subdomain with no sleeping particle has no file of them, as a serial run writes.
+            if (set.file == "dormant.vtp" && mine.size() == 0) continue;
+            gpic::writeParticles((tmp / set.file).string(), mine, set.t, set.materials, set.bodies);
+        }
         fs::rename(tmp, proc / time);
     }
+    const auto& particles = sets.front().particles;
+    const auto& members = sets.front().members;
     std::size_t most = 0;
     std::printf("%-10s %10s %8s\n", "subdomain", "particles", "cells");
     for (int k = 0; k < settings.subdomains; ++k) {
@@ -91,6 +115,7 @@ template <int D> void decompose(const std::string& caseDir, const std::string& t
     std::printf("%zu particles of time %s in %d subdomains, method %s; largest/mean %.3f\n", particles.size(),
                 time.c_str(), settings.subdomains, parDict.get<std::string>("method").c_str(),
                 mean > 0 ? static_cast<double>(most) / mean : 1.0);
+    if (sets.size() > 1) std::printf("and %zu sleeping particles (dormant.vtp) by their cells\n", sets.back().particles.size());
 }
 
 } // namespace

@@ -1,6 +1,7 @@
 // picReconstruct: merges the time directories of a decomposed case back into the case, as
 // OpenFOAM's reconstructPar: the particles of every processor<N>/<time>/particles.vtp in one
-// <time>/particles.vtp, ordered by particle id, with the rest of processor0's time directory
+// <time>/particles.vtp, ordered by particle id (and a run in stages' sleeping particles,
+// dormant.vtp, likewise), with the rest of processor0's time directory
 // (uniform/, the tools' surfaces), and the times added to <case>.pvd; the function objects'
 // files, which rank 0 writes, into postProcessing/. A time or a file the case holds already is
 // left as it is (said so). doc/parallel.md.
@@ -22,52 +23,74 @@ namespace {
 
 namespace fs = std::filesystem;
 
-template <int D>
-void reconstruct(const std::string& caseDir, const std::vector<fs::path>& procs, const std::string& time)
-{
-    gpic::Particles<D> all;
+//- One file's particles from every subdomain, ordered by particle id (each id once).
+template <int D> struct Merged {
+    gpic::Particles<D> particles;
     double t = 0;
     std::vector<std::string> materials, bodies;
+    int pieces = 0;  //- the subdomains that hold the file
+};
+
+template <int D>
+Merged<D> merge(const std::vector<fs::path>& procs, const std::string& time, const std::string& file, bool everyOne)
+{
+    Merged<D> all;
     for (std::size_t k = 0; k < procs.size(); ++k) {
-        const std::string path = (procs[k] / time / "particles.vtp").string();
-        if (!fs::exists(path))
-            throw gpic::InputError(path, 0, "missing: every processor<N> must hold time " + time);
+        const std::string path = (procs[k] / time / file).string();
+        if (!fs::exists(path)) {
+            if (everyOne) throw gpic::InputError(path, 0, "missing: every processor<N> must hold time " + time);
+            continue;  // a subdomain with no sleeping particle
+        }
         gpic::Particles<D> piece;
         double tk = 0;
         std::vector<std::string> m, b;
         gpic::readParticles(path, piece, tk, &m, &b);
-        if (k == 0) {
-            t = tk, materials = m, bodies = b;
-            all = std::move(piece);
+        if (all.pieces++ == 0) {
+            all.t = tk, all.materials = m, all.bodies = b;
+            all.particles = std::move(piece);
             continue;
         }
-        if (m != materials || b != bodies || tk != t)
-            throw gpic::InputError(path, 0, "its time, materials or bodies differ from " +
-                                                (procs[0] / time / "particles.vtp").string() + "'s");
-        all.append(piece);
+        if (m != all.materials || b != all.bodies || tk != all.t)
+            throw gpic::InputError(path, 0, "its time, materials or bodies differ from the other subdomains' " + file);
+        all.particles.append(piece);
     }
     // One order whatever the decomposition: by particle id, each id once.
-    std::vector<std::size_t> order(all.size());
+    gpic::Particles<D>& p = all.particles;
+    std::vector<std::size_t> order(p.size());
     std::iota(order.begin(), order.end(), std::size_t{0});
-    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return all.id[a] < all.id[b]; });
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return p.id[a] < p.id[b]; });
     for (std::size_t k = 1; k < order.size(); ++k)
-        if (all.id[order[k]] == all.id[order[k - 1]])
+        if (p.id[order[k]] == p.id[order[k - 1]])
             throw gpic::InputError((procs[0] / time).string(), 0,
-                                   "particle " + std::to_string(all.id[order[k]]) + " is in two subdomains");
-    all.reorder(order);
+                                   "particle " + std::to_string(p.id[order[k]]) + " is in two subdomains (" + file + ")");
+    p.reorder(order);
+    return all;
+}
+
+template <int D>
+void reconstruct(const std::string& caseDir, const std::vector<fs::path>& procs, const std::string& time)
+{
+    const Merged<D> all = merge<D>(procs, time, "particles.vtp", true);
+    const Merged<D> dormant = merge<D>(procs, time, "dormant.vtp", false);  // a run in stages
+    const double t = all.t;
     gpic::writeTimeDirectoryAtomically(caseDir, time, [&](const std::string& tmp) {
         for (const auto& entry : fs::directory_iterator(procs[0] / time)) {
             const std::string name = entry.path().filename().string();
-            if (name == "particles.vtp" || name == "grid.vti") continue;
+            if (name == "particles.vtp" || name == "dormant.vtp" || name == "grid.vti") continue;
             fs::copy(entry.path(), fs::path(tmp) / name, fs::copy_options::recursive);
         }
-        gpic::writeParticles((fs::path(tmp) / "particles.vtp").string(), all, t, materials, bodies);
+        gpic::writeParticles((fs::path(tmp) / "particles.vtp").string(), all.particles, t, all.materials, all.bodies);
+        if (dormant.pieces > 0)
+            gpic::writeParticles((fs::path(tmp) / "dormant.vtp").string(), dormant.particles, dormant.t,
+                                 dormant.materials, dormant.bodies);
     });
     gpic::PvdCollection pvd(gpic::pvdPath(caseDir));
     const auto stored = gpic::readStoredTime(caseDir, time);
     pvd.add(stored ? stored->value : t, time + "/particles.vtp", 0);
     pvd.write();
-    std::cout << time << ": " << all.size() << " particles from " << procs.size() << " subdomains\n";
+    std::cout << time << ": " << all.particles.size() << " particles"
+              << (dormant.pieces > 0 ? " and " + std::to_string(dormant.particles.size()) + " sleeping" : std::string())
+              << " from " << procs.size() << " subdomains\n";
 }
 
 //- The function objects' files of a parallel run (rank 0 writes them, with every rank's
