@@ -46,12 +46,14 @@ void ToolSurfaceWear::start(const MpmSolver<3>& solver, double time)
     surface_ = &tools_->tools().front().surface;
     if (!restarted() || volume_.size() != surface_->facets().size()) volume_.assign(surface_->facets().size(), 0.0);
 
-    std::ofstream& os = file("wear.dat");
-    os << "# Archard wear of '" << bodyName_ << "', k/H " << wearPerWork_
-       << " 1/Pa: the largest depth [m] and the worn volume [m^3], whole and per part\n# time maxDepth volume";
-    if (surface_->partNames().size() > 1)
-        for (const auto& part : surface_->partNames()) os << ' ' << part << ":maxDepth " << part << ":volume";
-    os << std::endl;
+    if (solver.writesFiles()) {  // a parallel run: rank 0
+        std::ofstream& os = file("wear.dat");
+        os << "# Archard wear of '" << bodyName_ << "', k/H " << wearPerWork_
+           << " 1/Pa: the largest depth [m] and the worn volume [m^3], whole and per part\n# time maxDepth volume";
+        if (surface_->partNames().size() > 1)
+            for (const auto& part : surface_->partNames()) os << ' ' << part << ":maxDepth " << part << ":volume";
+        os << std::endl;
+    }
     if (!restarted()) write(solver, time);
 }
 
@@ -65,10 +67,15 @@ void ToolSurfaceWear::at(StepPoint, const MpmSolver<3>& solver)
     const double dt = solver.deltaT(), tNew = solver.time() + dt;
     const double h = grid.cellSize().minCoeff(), reach = 2.0 * grid.cellSize().maxCoeff();
     const BodyField<3>& toolField = contact->field(body_);
-    const RigidPose pose = RigidPose::of(solver.particles(), body_);
+    const RigidPose pose = RigidPose::of(solver.particles(), body_, solver.ranks());
+    // A parallel run: the step's wear from the nodes each rank owns, added over the ranks, so
+    // that every rank holds the whole (and writes it in its state for a restart).
+    const bool parallel = solver.ranks().parallel();
+    std::vector<double> added(parallel ? volume_.size() : 0, 0.0);
+    std::vector<double>& wear = parallel ? added : volume_;
     for (int n : grid.active) {
         const Vector& F = grid.fContact[static_cast<std::size_t>(n)];
-        if (F.isZero(0.0) || !(toolField.mass[n] > 0.0)) continue;
+        if (F.isZero(0.0) || !(toolField.mass[n] > 0.0) || !solver.countsNode(n)) continue;
         const Vector x = grid.nodePosition(n), X = pose.unplace(x), push = pose.unturn(F);
         double distance = 0;  // to the nearest facet
         const int facet = surface_->facetPushedBy(X, push, 0.5 * h, reach, &distance);
@@ -91,11 +98,14 @@ void ToolSurfaceWear::at(StepPoint, const MpmSolver<3>& solver)
                 area += patch.back().second;
             }
         if (!(area > 0.0)) {
-            volume_[static_cast<std::size_t>(facet)] += worn;
+            wear[static_cast<std::size_t>(facet)] += worn;
             continue;
         }
-        for (const auto& [f, a] : patch) volume_[static_cast<std::size_t>(f)] += worn * a / area;
+        for (const auto& [f, a] : patch) wear[static_cast<std::size_t>(f)] += worn * a / area;
     }
+    if (!parallel) return;
+    solver.sumOverRanks(added);
+    for (std::size_t f = 0; f < volume_.size(); ++f) volume_[f] += added[f];
 }
 
 void ToolSurfaceWear::write(const MpmSolver<3>& solver, double time)
@@ -113,12 +123,13 @@ void ToolSurfaceWear::write(const MpmSolver<3>& solver, double time)
         total += volume_[f];
         maxDepth = std::max(maxDepth, depth[f]);
     }
+    const RigidPose pose = RigidPose::of(solver.particles(), body_, solver.ranks());
+    if (!solver.writesFiles()) return;  // a parallel run: rank 0 (every rank holds the whole)
     std::ofstream& os = file("wear.dat");
     os << time << ' ' << maxDepth << ' ' << total;
     if (parts > 1)
         for (std::size_t k = 0; k < parts; ++k) os << ' ' << deepest[k] << ' ' << volume[k];
     os << std::endl;
-    const RigidPose pose = RigidPose::of(solver.particles(), body_);
     std::vector<Space<3>::Vector> corners;
     corners.reserve(surface_->corners().size());
     for (const auto& c : surface_->corners()) corners.push_back(pose.place(c));

@@ -73,15 +73,17 @@ void ToolWear::start(const MpmSolver<2>& solver, double time)
         if (!restarted() || face.volume.size() != bins) face.volume.assign(bins, 0.0);
     }
 
-    std::ofstream& os = file("wear.dat");
-    os << "# Archard wear of '" << bodyName_ << "', k/H " << wearPerWork_
-       << " 1/Pa: per face the largest depth [m] and the worn volume [m^3/m]\n# time";
-    for (const auto& face : faces_) os << ' ' << face.name << ":maxDepth " << face.name << ":volume";
-    os << std::endl;
-    std::ofstream& profile = file("wearProfile.dat");
-    profile << "# wear depth along each face, at each row of wear.dat; face";
-    for (std::size_t k = 0; k < faces_.size(); ++k) profile << ' ' << k << ' ' << faces_[k].name;
-    profile << "; s from the face's start, bin centre (x y) [m]\n# time face s x y depth\n";
+    if (solver.writesFiles()) {  // a parallel run: rank 0
+        std::ofstream& os = file("wear.dat");
+        os << "# Archard wear of '" << bodyName_ << "', k/H " << wearPerWork_
+           << " 1/Pa: per face the largest depth [m] and the worn volume [m^3/m]\n# time";
+        for (const auto& face : faces_) os << ' ' << face.name << ":maxDepth " << face.name << ":volume";
+        os << std::endl;
+        std::ofstream& profile = file("wearProfile.dat");
+        profile << "# wear depth along each face, at each row of wear.dat; face";
+        for (std::size_t k = 0; k < faces_.size(); ++k) profile << ' ' << k << ' ' << faces_[k].name;
+        profile << "; s from the face's start, bin centre (x y) [m]\n# time face s x y depth\n";
+    }
     if (!restarted()) write(solver, time);
 }
 
@@ -102,14 +104,22 @@ void ToolWear::at(StepPoint point, const MpmSolver<2>& solver)
     if (grid.fContact.empty() || !contact) return;
     const double tNew = solver.time() + dt;
     const BodyField<2>& toolField = contact->field(body_);
-    for (auto& face : faces_) {
+    // A parallel run: the step's wear from the nodes each rank owns, added over the ranks, so
+    // that every rank holds the whole (and writes it in its state for a restart).
+    const bool parallel = solver.ranks().parallel();
+    std::vector<std::vector<double>> added;
+    if (parallel)
+        for (const auto& face : faces_) added.emplace_back(face.volume.size(), 0.0);
+    for (std::size_t k = 0; k < faces_.size(); ++k) {
+        Face& face = faces_[k];
+        std::vector<double>& wear = parallel ? added[k] : face.volume;
         const FaceBand band(face.from, face.to, grid.cellSize().maxCoeff());
         // A node's stretch of the face: the node spacing along it.
         const double width = std::abs(band.tangent().x()) * grid.cellSize().x() +
                              std::abs(band.tangent().y()) * grid.cellSize().y();
         for (int n : grid.active) {
             const Vector2& F = grid.fContact[static_cast<std::size_t>(n)];
-            if (F.isZero(0.0) || !(toolField.mass[n] > 0.0)) continue;
+            if (F.isZero(0.0) || !(toolField.mass[n] > 0.0) || !solver.countsNode(n)) continue;
             const Vector2 x = grid.nodePosition(n);
             const auto s = band.station(x);
             if (!s) continue;
@@ -118,13 +128,21 @@ void ToolWear::at(StepPoint point, const MpmSolver<2>& solver)
             Vector2 material;
             if (!materialVelocity(solver, *contact, n, material)) continue;
             const double slip = std::abs((material - tool->velocity(tNew, x)).dot(band.tangent()));
-            spread(face.volume, band.length(), *s, width, wearPerWork_ * Fn * slip * dt);
+            spread(wear, band.length(), *s, width, wearPerWork_ * Fn * slip * dt);
         }
     }
+    if (!parallel) return;
+    std::vector<double> all;
+    for (const auto& a : added) all.insert(all.end(), a.begin(), a.end());
+    solver.sumOverRanks(all);
+    std::size_t i = 0;
+    for (auto& face : faces_)
+        for (double& v : face.volume) v += all[i++];
 }
 
-void ToolWear::write(const MpmSolver<2>&, double time)
+void ToolWear::write(const MpmSolver<2>& solver, double time)
 {
+    if (!solver.writesFiles()) return;  // a parallel run: rank 0 (every rank holds the whole)
     std::ofstream& os = file("wear.dat");
     std::ofstream& profile = file("wearProfile.dat");
     os << time;

@@ -119,7 +119,7 @@ void Simulation<D>::setUpParallel()
     // Stages take their end conditions and layers over the ranks; each rank keeps the
     // sleeping particles of its cells.
     for (const auto& f : case_->functions)
-        if (!f->servesParallelRuns()) refuse("system/controlDict", "function object " + f->name() + " (bodyMotion, forces, massFlow and toolFill serve parallel runs so far)");
+        if (!f->servesParallelRuns()) refuse("system/controlDict", "function object " + f->name() + " (its type does not say it serves parallel runs: FunctionObject::servesParallelRuns, doc/parallel.md)");
     if (case_->hasLoads) refuse("constant/loads", "applied loads");
     // volumetricStrain cellMean needs nothing more: a cell's particles are all its owner's;
     // APIC's affine term goes with the momentum's scatter, XPIC completes its projections.

@@ -169,13 +169,16 @@ moves=no compare $work/footing 2 0.15 0.3
 # 4 mm at 0.5 m/s, the blade and the sand ahead of it cross into the second.
 prepare geotechnics/blade $work/blade 0.008 0.004 simple 3 "simpleCoeffs { n (3 1); }"
 sed -i 's/velocity (0.005 0)/velocity (0.5 0)/' $work/blade/constant/rigidBodies $work/blade/processor*/constant/rigidBodies
-# ... and the sand in a box ahead of it (toolFill: a sum over every rank's particles)
+# ... the sand in a box ahead of it (toolFill: a sum over every rank's particles) and the wear
+# of its face (toolWear: each step's wear from the nodes each rank owns, added over the ranks)
 for f in $work/blade/system/controlDict $work/blade/processor*/system/controlDict; do
     python3 - $f <<'END'
 import re, sys
 s = open(sys.argv[1]).read().replace('writeInterval 1250;', 'writeInterval 100;')
 fill = 'fill { type toolFill; body blade; bodies (soil); writeInterval 100; region { type rectangle; min (0.32 0.3); max (0.42 0.45); } }'
-s, n = re.subn(r'\nfunctions\s*\{', '\nfunctions\n{\n    ' + fill, s)
+wear = ('wear { type toolWear; body blade; wearCoefficient 1e-4; hardness 2e9; resolution 0.01; writeInterval 100; '
+        'faces { front { from (0.32 0.19); to (0.32 0.45); } } }')
+s, n = re.subn(r'\nfunctions\s*\{', '\nfunctions\n{\n    ' + fill + '\n    ' + wear, s)
 if n != 1:
     sys.exit('no functions in ' + sys.argv[1])
 open(sys.argv[1], 'w').write(s)
