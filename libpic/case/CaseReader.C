@@ -218,6 +218,16 @@ template <int D> std::unique_ptr<Case<D>> readCase(const RunOptions& options)
     if (const Communicator* comm = options.communicator) {  // a parallel run: its sums over the ranks
         in.ranks.sum = [comm](std::vector<double>& v) { comm->sumInRankOrder(v); };
         in.ranks.min = [comm](std::vector<double>& v) { comm->min(v); };
+        in.ranks.gather = [comm](const std::vector<char>& mine) {
+            std::vector<int> peers;
+            for (int r = 0; r < comm->size(); ++r)
+                if (r != comm->rank()) peers.push_back(r);
+            const auto got = comm->exchange(peers, std::vector<std::vector<char>>(peers.size(), mine));
+            std::vector<std::vector<char>> all(static_cast<std::size_t>(comm->size()));
+            all[static_cast<std::size_t>(comm->rank())] = mine;
+            for (std::size_t k = 0; k < peers.size(); ++k) all[static_cast<std::size_t>(peers[k])] = got[k];
+            return all;
+        };
     }
     if (hasFile(dir, "constant/contactProperties")) {
         const Dictionary contactDict = readCaseFile(dir, "constant/contactProperties");

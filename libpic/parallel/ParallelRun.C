@@ -69,6 +69,7 @@ template <int D> void ParallelRun<D>::completeMax(const Grid<D>& grid, std::vect
 
 template <int D> void ParallelRun<D>::completeMassAndMomentum(Grid<D>& grid) const
 {
+    if (shareAlways_) shareActiveNodes(grid);
     complete(grid, values(grid.mass), 1);
     complete(grid, values(grid.momentum), D);
 }

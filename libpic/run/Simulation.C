@@ -120,7 +120,6 @@ void Simulation<D>::setUpParallel()
     // sleeping particles of its cells.
     for (const auto& f : case_->functions)
         if (!f->servesParallelRuns()) refuse("system/controlDict", "function object " + f->name() + " (its type does not say it serves parallel runs: FunctionObject::servesParallelRuns, doc/parallel.md)");
-    if (case_->hasLoads) refuse("constant/loads", "applied loads");
     // volumetricStrain cellMean needs nothing more: a cell's particles are all its owner's;
     // APIC's affine term goes with the momentum's scatter, XPIC completes its projections.
     if (solver_.particles().carries(FieldGroup::polar)) refuse("constant/materials", "polar (Cosserat) materials");
@@ -131,6 +130,7 @@ void Simulation<D>::setUpParallel()
     const Grid<D>& grid = solver_.grid();
     parallel_ = std::make_unique<ParallelRun<D>>(comm, grid, options_.caseDir, (perAxis - 1) / 2);
     parallel_->place(solver_, dormant());  // a start written before the last re-decomposition
+    if (case_->hasLoads) parallel_->shareActiveNodesAlways();  // the guard's load work: owned nodes
     solver_.setRankSums(parallel_.get());
     sumGuardOverRanks();
     log() << "Parallel run: rank " << comm.rank() << " of " << comm.size() << ", " << solver_.particles().size()

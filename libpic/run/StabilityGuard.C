@@ -120,10 +120,11 @@ double StabilityGuard<D>::loadWork(double dt) const
 #pragma omp parallel for if (count > parallelFrom) schedule(static) reduction(+ : w)
     for (long long k = 0; k < count; ++k) {
         const auto n = static_cast<std::size_t>(grid.active[static_cast<std::size_t>(k)]);
+        if (!solver_.countsNode(static_cast<int>(n))) continue;  // a parallel run: each node once
         const Vector load = grid.fExt[n] - grid.mass[n] * g;
         w += load.dot(grid.velocity[n] - 0.5 * dt * grid.accel[n]);
     }
-    return dt * w;
+    return dt * solver_.ranks().total(w);
 }
 
 template <int D>
