@@ -41,6 +41,19 @@ END
     (cd $c && picInit > log.picInit && picDecompose > log.picDecompose)
 }
 
+stacked()  # case redecomposeInterval maxImbalance: 2 subdomains one above the other, decomposed
+{
+    cat > $1/system/decomposeParDict <<END
+FoamFile { version 2.0; format ascii; class dictionary; location "system"; object decomposeParDict; }
+numberOfSubdomains 2;
+method hierarchical;
+hierarchicalCoeffs { n (1 2); }
+redecomposeInterval $2;
+maxImbalance $3;
+END
+    (cd $1 && picInit > /dev/null && picDecompose > /dev/null)
+}
+
 compare()  # case ranks times...
 {
     local c=$1 ranks=$2
@@ -219,15 +232,7 @@ edit(c + '/constant/grid', [(r'cellSize\s+[^;]+;', 'cellSize 0.01;'), (r'nCells\
 edit(c + '/system/controlDict', [(r'\ndeltaT\s+[^;]+;', '\ndeltaT 1e-4;'), (r'\nwriteInterval\s+[^;]+;', '\nwriteInterval 0.1;'),
      (r'maxTime 3;', 'maxTime 0.02;'), (r'duration 0.5;', 'duration 0.2;')])
 END
-cat > $c/system/decomposeParDict <<END
-FoamFile { version 2.0; format ascii; class dictionary; location "system"; object decomposeParDict; }
-numberOfSubdomains 2;
-method hierarchical;
-hierarchicalCoeffs { n (1 2); }
-redecomposeInterval 200;
-maxImbalance 1.05;
-END
-(cd $c && picInit > /dev/null && picDecompose > /dev/null)
+stacked $c 200 1.05
 compare $c 2 0.02 0.1 0.22
 grep -q "decomposed again at step" $c/log.parallel || fail "the silo was not decomposed again as it emptied"
 grep "decomposed again" $c/log.parallel
@@ -242,15 +247,7 @@ c=$work/fill
 cp -r "$source_dir/tutorials/stages/layeredFill" $c
 (cd $c && ./Allclean > /dev/null)
 sed -i 's/maxTime 1; }/maxTime 0.05; }/' $c/system/controlDict
-cat > $c/system/decomposeParDict <<END
-FoamFile { version 2.0; format ascii; class dictionary; location "system"; object decomposeParDict; }
-numberOfSubdomains 2;
-method hierarchical;
-hierarchicalCoeffs { n (1 2); }
-redecomposeInterval 100;
-maxImbalance 1.1;
-END
-(cd $c && picInit > /dev/null && picDecompose > /dev/null)
+stacked $c 100 1.1
 moves=no compare $c 2 0.0625
 grep -q "decomposed again at step" $c/log.parallel || fail "the fill was not decomposed again"
 # The sleeping particles merged back: the serial run's at 0.25 s, id for id.
