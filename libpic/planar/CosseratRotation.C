@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace gpic {
 
@@ -26,6 +27,7 @@ bool CosseratRotation::needed(const PassScene<2>& scene)
 CosseratRotation::CosseratRotation(PassScene<2>& scene)
     : CosseratRotation(scene.materials, scene.sides, scene.grid.nNodes())
 {
+    ranks_ = scene.inputs.ranks;
     if (scene.inputs.rotationSides) setSideFixed(*scene.inputs.rotationSides);
     if (!scene.inputs.rigidRotation.empty()) setRigidFixed(std::move(scene.inputs.rigidRotation));
 }
@@ -84,6 +86,7 @@ void CosseratRotation::setUpParticles(Particles<2>& p)
         if (mJ > 0) lightest = lightest == 0 ? mJ : std::min(lightest, mJ);
     }
     r_.minInertia = 1e-9 * lightest;
+    lightestHere_ = lightest;
 }
 
 double CosseratRotation::maxDeltaT(std::size_t m, double h, double massScale) const
@@ -136,6 +139,13 @@ void CosseratRotation::toGrid(EngineView<2>& e)
         r.fixed[n] = 0;
     });
     spinToGrid(e, true);
+    if (e.rankSums) {  // a parallel run: the other ranks' parts, and every rank's lightest
+        e.rankSums->complete(e.grid, r.inertia);
+        e.rankSums->complete(e.grid, r.momentum);
+        const double none = std::numeric_limits<double>::max();
+        const double lightest = ranks_.smallest(lightestHere_ > 0 ? lightestHere_ : none);
+        r.minInertia = lightest < none ? 1e-9 * lightest : 0.0;
+    }
     e.grid.forEachActiveNode([&](int n) { r.rate[n] = r.inertia[n] > 0.0 ? r.momentum[n] / r.inertia[n] : 0.0; });
     // Conditions: sides with `rotation fixed`, and the nodes a rigid body drives.
     for (int s = 0; s < GridSides<2>::count; ++s)
@@ -193,6 +203,7 @@ void CosseratRotation::update(EngineView<2>& e, double dt)
 {
     auto timer = e.timers.time("rotation");
     CosseratField& r = r_;
+    if (e.rankSums) e.rankSums->complete(e.grid, r.moment);  // a parallel run: the other ranks' parts
     const double damping = e.damping;
     e.grid.forEachActiveNode([&](int n) {
         if (r.fixed[n]) {
@@ -301,6 +312,7 @@ void CosseratRotation::remap(EngineView<2>& e)
     CosseratField& r = r_;
     e.grid.forEachActiveNode([&](int n) { r.momentum[n] = 0.0; });
     spinToGrid(e, false);  // the step's inertia stays
+    if (e.rankSums) e.rankSums->complete(e.grid, r.momentum);
     e.grid.forEachActiveNode(
         [&](int n) { r.rate[n] = r.inertia[n] > 0.0 && !r.fixed[n] ? r.momentum[n] / r.inertia[n] : 0.0; });
 }

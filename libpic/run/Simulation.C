@@ -112,17 +112,17 @@ template <int D> void Simulation<D>::sumGuardOverRanks()
 template <int D>
 void Simulation<D>::setUpParallel()
 {
-    // What a parallel run does not do yet (doc/parallel.md): one line each, before any step.
-    const auto refuse = [](const std::string& file, const std::string& what) {
-        throw InputError(file, 0, what + ": not yet in a parallel run (doc/parallel.md); run it without -parallel");
-    };
-    // Stages take their end conditions and layers over the ranks; each rank keeps the
-    // sleeping particles of its cells.
+    // Every part of the suite runs in parallel (doc/parallel.md): the passes complete their
+    // scatters (XPIC's projections, the Cosserat rotation's fields), stages take their ends
+    // and layers over the ranks, each rank keeps the sleeping particles of its cells, and a
+    // cell's particles are all its owner's (volumetricStrain cellMean). A plugin's function
+    // object that does not say it serves parallel runs is refused in one line, before any step.
     for (const auto& f : case_->functions)
-        if (!f->servesParallelRuns()) refuse("system/controlDict", "function object " + f->name() + " (its type does not say it serves parallel runs: FunctionObject::servesParallelRuns, doc/parallel.md)");
-    // volumetricStrain cellMean needs nothing more: a cell's particles are all its owner's;
-    // APIC's affine term goes with the momentum's scatter, XPIC completes its projections.
-    if (solver_.particles().carries(FieldGroup::polar)) refuse("constant/materials", "polar (Cosserat) materials");
+        if (!f->servesParallelRuns())
+            throw InputError("system/controlDict", 0,
+                             "function object " + f->name() +
+                                 ": its type does not say it serves parallel runs (FunctionObject::servesParallelRuns, "
+                                 "doc/parallel.md); run it without -parallel");
     const Communicator& comm = *options_.communicator;
     // The layers of nodes beyond its cell a particle reaches: k nodes per axis, (k - 1) / 2.
     int perAxis = 1;

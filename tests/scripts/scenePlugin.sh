@@ -144,4 +144,15 @@ awk '
           printf "gridMomentum: %d rows, |p_y + M g t_n| / M g t %.2g before, |p_y + M g t_(n+1)| / M g t %.2g after the update\n", n, worstB, worstA
           exit late || worstB > 1e-9 || worstA > 1e-9 }' \
     "$fall/postProcessing/grid/0/gridMomentum.dat" || fail "the hooked function object did not see the grid at its points"
+# A parallel run refuses a function object whose type does not say it serves parallel runs
+# (gridMomentum reads the grid of its own rank alone), in one line, before any step.
+if ldd "$(ls "$tmp"/prefix/lib*/libpic.so* | head -1)" | grep -q libmpi && command -v mpirun > /dev/null; then
+    step "gridMomentum refused by a parallel run"
+    printf 'numberOfSubdomains 2;\nmethod simple;\nsimpleCoeffs { n (2 1); }\n' > "$fall/system/decomposeParDict"
+    rm -rf "$fall"/processor* && run "$fall.picDecompose.log" "$tmp/prefix/bin/picDecompose" -case "$fall" -time 0
+    if out=$(mpirun --oversubscribe --allow-run-as-root -np 2 "$tmp/prefix/bin/picSolver" -case "$fall" -parallel 2>&1); then
+        fail "a parallel run took gridMomentum"
+    fi
+    grep -q "function object grid: its type does not say it serves parallel runs" <<< "$out" || fail "message: $out"
+fi
 step "PASS"
