@@ -41,6 +41,22 @@ END
     (cd $c && picInit > log.picInit && picDecompose > log.picDecompose)
 }
 
+withFunctions()  # case entries...: function objects added to the case's and its subdomains' controlDicts
+{
+    local c=$1
+    shift
+    for f in $c/system/controlDict $c/processor*/system/controlDict; do
+        python3 - $f "$@" <<'END'
+import re, sys
+s = open(sys.argv[1]).read()
+s, n = re.subn(r'\nfunctions\s*\{', '\nfunctions\n{\n    ' + '\n    '.join(sys.argv[2:]), s)
+if n != 1:
+    sys.exit('no functions in ' + sys.argv[1])
+open(sys.argv[1], 'w').write(s)
+END
+    done
+}
+
 stacked()  # case redecomposeInterval maxImbalance: 2 subdomains one above the other, decomposed
 {
     cat > $1/system/decomposeParDict <<END
@@ -190,6 +206,15 @@ compare $work/cylinder 4 0.03 0.06
 prepare geotechnics/cylinderCollapse/axisymmetric $work/axisymmetric 0.1 0.05 scotch 2
 compare $work/axisymmetric 2 0.05 0.1
 
+# A rigid ball drawn as STL, load-driven and turning (weighted, freeRotation), rolling down an
+# elastic slab in 3D on 2 ranks (contact with its facets' normals and separationCutoff): the
+# load on it summed over the ranks' owned nodes moves it alike on every rank, its pose from
+# every rank's particles; its forces and (3D) wear rows too.
+prepare contact/inclinedSphere/rigidBall $work/ball 0.1 0.05 hierarchical 2 "hierarchicalCoeffs { n (2 1 1); }"
+withFunctions $work/ball "forces { type forces; bodies (sphere); writeInterval 20; }" \
+    "wear { type toolWear; body sphere; wearCoefficient 1e-4; hardness 2e9; writeInterval 20; }"
+compare $work/ball 2 0.05 0.1
+
 # A rigid footing pushed into silt (one velocity field: the rigid nodes' loads summed over the
 # nodes each rank owns), moved to straddle the two subdomains, with its forces rows. Not
 # beyond 6 mm: the serial run itself, its gravity changed by one unit in the last place,
@@ -205,19 +230,10 @@ prepare geotechnics/blade $work/blade 0.008 0.004 simple 3 "simpleCoeffs { n (3 
 sed -i 's/velocity (0.005 0)/velocity (0.5 0)/' $work/blade/constant/rigidBodies $work/blade/processor*/constant/rigidBodies
 # ... the sand in a box ahead of it (toolFill: a sum over every rank's particles) and the wear
 # of its face (toolWear: each step's wear from the nodes each rank owns, added over the ranks)
-for f in $work/blade/system/controlDict $work/blade/processor*/system/controlDict; do
-    python3 - $f <<'END'
-import re, sys
-s = open(sys.argv[1]).read().replace('writeInterval 1250;', 'writeInterval 100;')
-fill = 'fill { type toolFill; body blade; bodies (soil); writeInterval 100; region { type rectangle; min (0.32 0.3); max (0.42 0.45); } }'
-wear = ('wear { type toolWear; body blade; wearCoefficient 1e-4; hardness 2e9; resolution 0.01; writeInterval 100; '
-        'faces { front { from (0.32 0.19); to (0.32 0.45); } } }')
-s, n = re.subn(r'\nfunctions\s*\{', '\nfunctions\n{\n    ' + fill + '\n    ' + wear, s)
-if n != 1:
-    sys.exit('no functions in ' + sys.argv[1])
-open(sys.argv[1], 'w').write(s)
-END
-done
+sed -i 's/writeInterval 1250;/writeInterval 100;/' $work/blade/system/controlDict $work/blade/processor*/system/controlDict
+withFunctions $work/blade \
+    "fill { type toolFill; body blade; bodies (soil); writeInterval 100; region { type rectangle; min (0.32 0.3); max (0.42 0.45); } }" \
+    "wear { type toolWear; body blade; wearCoefficient 1e-4; hardness 2e9; resolution 0.01; writeInterval 100; faces { front { from (0.32 0.19); to (0.32 0.45); } } }"
 compare $work/blade 3 0.004 0.008
 
 # The silo (seed 4.6) in its two stages, a damped settling with the outlet closed and the
