@@ -43,11 +43,9 @@ void SingleField<D>::particlesToGrid(EngineView<D>& e, double t)
     });
     grid.collectActive();
     if (e.rankSums) {  // a parallel run: the other ranks' parts
-        if (driven_) {  // the loads on rigid bodies sum over the nodes each rank owns
-            e.rankSums->shareActiveNodes(grid);
-            driven_->complete(grid, *e.rankSums);
-        }
-        e.rankSums->completeMassAndMomentum(grid);
+        // The loads on rigid bodies sum over the nodes each rank owns: those touched shared first.
+        e.rankSums->completeMassAndMomentum(grid, driven_ != nullptr);
+        if (driven_) driven_->complete(grid, *e.rankSums);
     }
     grid.velocitiesFromMomenta();
     if (driven_) driven_->constrain(grid, e.rigid, t);

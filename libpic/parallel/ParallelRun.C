@@ -67,9 +67,9 @@ template <int D> void ParallelRun<D>::completeMax(const Grid<D>& grid, std::vect
     ++exchanges_;
 }
 
-template <int D> void ParallelRun<D>::completeMassAndMomentum(Grid<D>& grid) const
+template <int D> void ParallelRun<D>::completeMassAndMomentum(Grid<D>& grid, bool shareNodes) const
 {
-    if (shareAlways_) shareActiveNodes(grid);
+    if (shareNodes || shareAlways_) shareActiveNodes(grid);
     complete(grid, values(grid.mass), 1);
     complete(grid, values(grid.momentum), D);
 }

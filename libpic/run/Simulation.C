@@ -103,12 +103,6 @@ template <int D> Particles<D>* Simulation<D>::dormant()
     return case_->stages ? &case_->stages->pool().dormant() : nullptr;
 }
 
-template <int D> void Simulation<D>::sumGuardOverRanks()
-{
-    const Communicator& comm = parallel_->communicator();
-    guard_->sumOverRanks([&comm](std::vector<double>& v) { comm.sumInRankOrder(v); });
-}
-
 template <int D>
 void Simulation<D>::setUpParallel()
 {
@@ -132,7 +126,6 @@ void Simulation<D>::setUpParallel()
     parallel_->place(solver_, dormant());  // a start written before the last re-decomposition
     if (case_->hasLoads) parallel_->shareActiveNodesAlways();  // the guard's load work: owned nodes
     solver_.setRankSums(parallel_.get());
-    sumGuardOverRanks();
     log() << "Parallel run: rank " << comm.rank() << " of " << comm.size() << ", " << solver_.particles().size()
           << " particles here, " << parallel_->sharedValues() << " node values shared with the neighbours per exchange\n";
 }
@@ -157,7 +150,6 @@ void Simulation<D>::restartGuard()
     auto before = std::move(guard_);
     guard_ = std::make_unique<StabilityGuard<D>>(case_->stability, solver_, case_->context.bodyNames,
                                               case_->stages->gravity(), case_->hasLoads, snapshotFile());
-    if (parallel_) sumGuardOverRanks();
     guard_->start(time_, step_);
     if (before) guard_->continueStatistics(*before);
     kineticRatioWarned_ = false;

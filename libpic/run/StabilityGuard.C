@@ -99,9 +99,9 @@ typename StabilityGuard<D>::Survey StabilityGuard<D>::survey() const
     s.gravity = gravity;
     s.speed2 = speed2;
     s.count = static_cast<double>(n);
-    if (addRanks_) {
+    if (solver_.ranks().parallel()) {  // every rank's: particles changing ranks carry no energy
         std::vector<double> sums{s.kinetic, s.work, s.gravity, s.count};
-        addRanks_(sums);
+        solver_.sumOverRanks(sums);
         s.kinetic = sums[0], s.work = sums[1], s.gravity = sums[2], s.count = sums[3];
     }
     return s;
@@ -172,9 +172,9 @@ void StabilityGuard<D>::start(double t, long step, const std::string& onDisk)
     }
     // A floor for a scene that starts at rest, unstressed and weightless: motion of a
     // millionth of the wave speed.
-    if (addRanks_) {
+    if (solver_.ranks().parallel()) {
         std::vector<double> sums{elastic, mass};
-        addRanks_(sums);
+        solver_.sumOverRanks(sums);
         elastic = sums[0], mass = sums[1];
     }
     const double floor = 0.5 * mass * (1e-6 * cMax) * (1e-6 * cMax);
