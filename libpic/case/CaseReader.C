@@ -155,6 +155,7 @@ template <int D> std::unique_ptr<Case<D>> readCase(const RunOptions& options)
     c.sortInterval = schemes.getOrDefault<long>("sortInterval", 100);
     if (c.sortInterval < 0) schemes.fail("sortInterval", "sortInterval must be >= 0 (0: never sort)");
     c.scheme = Registry<UpdateScheme>::select(c.schemeName, schemes, schemes, "updateScheme");
+    in.remapsVelocity = c.scheme->remapsVelocity();
     in.shape = Registry<ShapeFunction<D>>::select(c.shapeName, schemes, schemes, "shapeFunction");
     if (in.grid.axisymmetric()) {  // what the hoop terms are not yet written for
         if (!in.shape->servesAxisymmetric())

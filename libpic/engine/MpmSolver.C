@@ -90,6 +90,7 @@ MpmSolver<D>::MpmSolver(SolverInputs<D> in)
     PassScene<D> scene{grid_, particles_, materials_, sides_, *shape_, *transfer_, in};
     for (auto& pass : assemblePasses(scene)) addPass(std::move(pass));
     affine_ = find<AffineVelocity<D>>();
+    affineSkipsLightNodes_ = in.remapsVelocity;
     filter_ = find<XpicFilter<D>>();
     setUpPassParticles();
 }
@@ -527,7 +528,9 @@ void MpmSolver<D>::gridToParticles(double dt)
             a += N * accel[n];
             if (xpic) vStar += N * star[n];
         }
-        if (affine_) affine_->form(p, weights_, static_cast<std::size_t>(q), velocityField, p.x[q]);
+        if (affine_)
+            affine_->form(p, weights_, static_cast<std::size_t>(q), velocityField, p.x[q],
+                          affineSkipsLightNodes_ ? grid_.mass.data() : nullptr, vNew);
         p.x[q] += dt * vNew;  // eq. 2.4.7
         if (xpic) p.v[q] = vStar + dt * a;  // XPIC: the filtered v^t plus the increment
         // eq. 2.4.8 (FLIP), blended with PIC when the FLIP share is below 1: a particle's own

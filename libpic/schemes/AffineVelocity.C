@@ -18,10 +18,12 @@ AffineVelocity<D>::AffineVelocity(const Grid<D>& grid, const ShapeFunction<D>& s
 
 template <int D>
 void AffineVelocity<D>::form(Particles<D>& p, const ShapeWeights<D>& weights, std::size_t q,
-                          const std::vector<Vector>& velocity, const Vector& xp) const
+                          const std::vector<Vector>& velocity, const Vector& xp, const double* mass,
+                          const Vector& own) const
 {
     const int stride = weights.stride;
     const std::size_t k0 = q * stride;
+    const double light = lightShare * p.m[q];
     typename Space<D>::Gradient B = Space<D>::Gradient::Zero(), Dp = Space<D>::Gradient::Zero();
     for (int k = 0; k < stride; ++k) {
         const int n = weights.node[k0 + k];
@@ -29,9 +31,12 @@ void AffineVelocity<D>::form(Particles<D>& p, const ShapeWeights<D>& weights, st
         const double N = weights.N[k0 + k];
         const Vector r = centre_[static_cast<std::size_t>(n)] - xp;
         Dp.noalias() += (N * r) * r.transpose();  // D_p, h^2/4 I inside a B-spline grid
+        // A light node's v^{t+1} holds dt F/m of a tiny mass, which bilinear cells would take
+        // at full weight (doc/stability.md, "A node one particle reaches").
+        const Vector& v = mass && mass[n] < light ? own : velocity[n];
         // bilinear: B_p D_p^-1 is the velocity gradient (D_p singular on a grid line)
-        if (fromGradient_) B.noalias() += velocity[n] * weights.dN[k0 + k].transpose();
-        else B.noalias() += (N * velocity[n]) * r.transpose();  // B_p (Jiang et al. 2015)
+        if (fromGradient_) B.noalias() += v * weights.dN[k0 + k].transpose();
+        else B.noalias() += (N * v) * r.transpose();  // B_p (Jiang et al. 2015)
     }
     typename Space<D>::Gradient& C = p.affine[q];
     C = fromGradient_ ? B : typename Space<D>::Gradient(B * Dp.inverse());
