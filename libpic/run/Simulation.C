@@ -69,7 +69,8 @@ Simulation<D>::Simulation(const RunOptions& options, std::unique_ptr<Case<D>> c)
             case_->volumetricStrainName == "cellMean"
                 ? "measured at a wall's foot with volumetricStrain cellMean, which damping does not cure: use "
                   "volumetricStrain particle in system/mpmSchemes"
-                : "a quasi-static push needs damping 0.1 in system/controlDict");
+                : "damping 0.1 in system/controlDict calms a quasi-static push, but it drags on the soil "
+                  "the tool moves: read the force from an undamped run where one runs through");
     if (options_.communicator) setUpParallel();
     // Every keyword has been read by now: what is left is a typo or a leftover.
     case_->warnUnused();
