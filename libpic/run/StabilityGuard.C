@@ -289,10 +289,15 @@ std::optional<StabilityTrip> StabilityGuard<D>::check(double t, long step, doubl
         // misses or a growth that is not the step's (doc/stability.md).
         // Within 1 %: the particle's speed, and with it the limit, has moved since the step began.
         const Vector& v = p.v[worst];
-        const std::string within = finite(v) && dt <= 1.01 * neededStep(worst, v)
-                                       ? "; the step met that estimate: run again with a smaller maxCourant (or "
-                                         "deltaT); a growth that comes at the same time is not the step's"
-                                       : std::string();
+        std::string within = finite(v) && dt <= 1.01 * neededStep(worst, v)
+                                 ? "; the step met that estimate: run again with a smaller maxCourant (or "
+                                   "deltaT); a growth that comes at the same time is not the step's"
+                                 : std::string();
+        // Under FLIP such a growth can live in a particle's carried velocity alone, which the
+        // grid does not show (the polar bucket, doc/stability.md): APIC sets it from the grid.
+        if (!within.empty() && solver_.transfer().flipShare(dt) > 0.5)
+            within += "; under FLIP it can be a particle's own velocity running away from its grid's: "
+                      "try transfer APIC (doc/stability.md)";
         return StabilityTrip{describe(what.str(), worst, t, step, dt) + within + note(), false};
     }
 
