@@ -67,8 +67,8 @@ Simulation<D>::Simulation(const RunOptions& options, std::unique_ptr<Case<D>> c)
         toolWatch_ = std::make_unique<ToolForceWatch<D>>(
             case_->context.bodyNames, rigid,
             case_->volumetricStrainName == "cellMean"
-                ? "measured at a wall's foot with volumetricStrain cellMean, which damping does not cure: use "
-                  "volumetricStrain particle in system/mpmSchemes"
+                ? "measured at a wall's foot with volumetricStrain cellMean under FLIP, which damping does not "
+                  "cure: use transfer APIC or volumetricStrain particle in system/mpmSchemes"
                 : "damping 0.1 in system/controlDict calms a quasi-static push, but it drags on the soil "
                   "the tool moves: read the force from an undamped run where one runs through");
     if (options_.communicator) setUpParallel();
