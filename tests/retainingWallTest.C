@@ -6,7 +6,7 @@
 //     state): Rankine's K_a = (1 - sin phi) / (1 + sin phi).
 //   - Translating away on a rough floor, rough (delta 20 deg) against smooth: Coulomb's
 //     wedge with wall friction, whose horizontal thrust is 0.838 of Rankine's.
-//   - A wall whose force swings ever wider (the cell-mean dilatation at its foot) is stopped
+//   - A wall whose force swings ever wider (FLIP with the cell-mean dilatation at its foot) is stopped
 //     by the stability guard, and warned of, naming the wall, when the guard is relaxed.
 #include "support/CaseRunner.H"
 
@@ -102,7 +102,8 @@ TEST(RetainingWall, aWallForceThatSwingsEverWiderIsWarnedOfAndStopped)
     // damping 0.1 does not prevent it. The energy guard stops the run at 0.513 s, and with the
     // guard relaxed the tool watch warns at 0.65 s, naming the wall and the cure. (Before
     // each particle's pressure was held at its cell's, the guard stopped the run at 0.548 s
-    // with the watch's warning before it: the swing is not that pressure's.)
+    // with the watch's warning before it: the swing is not that pressure's. With transfer APIC
+    // the run is steady: the particle at the foot keeps a FLIP velocity of its own.)
     ScratchDir scratch("retainingWall");
     const auto wall = [&](const std::string& name, double endTime) {
         const fs::path dir = writeWall(scratch, name, "slip", 0.0, -0.01, endTime);
