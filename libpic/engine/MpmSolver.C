@@ -491,7 +491,7 @@ void MpmSolver<D>::updateStress(double dt)
         materials_[chunk.material]->updateStress(p, chunk, dt);
         for (std::size_t q = chunk.begin; q < chunk.end; ++q) p.work[q] += 0.5 * p.V[q] * contract(p.sigma[q], p.dEps[q]);
     });
-    if (cellMean_) cellMean_->holdCellPressure(p);
+    if (cellMean_) cellMean_->holdCellPressure(p, cellMeanValue_);
     reach(StepPoint::afterStressUpdate, dt);
 }
 

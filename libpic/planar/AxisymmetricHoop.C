@@ -41,7 +41,7 @@ void AxisymmetricHoop::at(StepPoint point, EngineView<2>& e, double dt)
 {
     if (point == StepPoint::afterParticlesToGrid) means_.assign(e.grid, e.particles, [&](std::size_t q) { return e.isRigid(q); });
     else if (point == StepPoint::afterForces) addHoopForces(e);
-    else if (point == StepPoint::afterStressUpdate) means_.holdCellPressure(e.particles);
+    else if (point == StepPoint::afterStressUpdate) means_.holdCellPressure(e.particles, mean_);
     else addHoopStrain(e, dt);
 }
 
